@@ -1,0 +1,218 @@
+#include "cpuSolver.H"
+
+#include <limits>
+
+#ifdef _OPENMP
+#   include <omp.h>
+#endif
+
+namespace sh
+{
+
+template<class Real>
+CpuSolver<Real>::CpuSolver(const Problem<Real>& pb, bool parallel)
+:
+    geometry_(pb),
+    parallel_(parallel)
+{
+    model_.p = pb.params;
+    model_.g = pb.grid;
+    model_.bc = pb.bc;
+    model_.geo = geometry_.view();
+
+    const Grid<Real>& g = pb.grid;
+    const std::size_t n = g.size();
+    U_.resize(n);
+    Uh_.resize(n);
+    Unew_.resize(n);
+    Fx_.resize(n);
+    Fy_.resize(n);
+    theta_.assign(n, Real(1));
+
+    for (int j = 0; j < g.ny; ++j)
+    {
+        for (int i = 0; i < g.nx; ++i)
+        {
+            const int c = g.idx(i, j);
+            const int k = pb.cell(i, j);
+            U_.h[c] = pb.h[k];
+            U_.hu[c] = pb.hu[k];
+            U_.hv[c] = pb.hv[k];
+        }
+    }
+    Unew_ = U_;
+}
+
+
+template<class Real>
+std::string CpuSolver<Real>::name() const
+{
+    return parallel_
+        ? "cpu (OpenMP, " + std::to_string(nThreads()) + " threads)"
+        : "cpu (serial)";
+}
+
+
+template<class Real>
+int CpuSolver<Real>::nThreads() const
+{
+#ifdef _OPENMP
+    return parallel_ ? omp_get_max_threads() : 1;
+#else
+    return 1;
+#endif
+}
+
+
+template<class Real>
+void CpuSolver<Real>::fillGhosts(const Fields<Real>& U)
+{
+    const Grid<Real>& g = model_.g;
+    const int ng = Grid<Real>::ng;
+    for (int j = 0; j < g.ny; ++j)
+    {
+        for (int k = 1; k <= ng; ++k)
+        {
+            fillGhostCell(model_, U, xMin, -k, j);
+            fillGhostCell(model_, U, xMax, g.nx - 1 + k, j);
+        }
+    }
+    for (int k = 1; k <= ng; ++k)
+    {
+        for (int i = -ng; i < g.nx + ng; ++i)
+        {
+            fillGhostCell(model_, U, yMin, i, -k);
+            fillGhostCell(model_, U, yMax, i, g.ny - 1 + k);
+        }
+    }
+}
+
+
+template<class Real>
+Real CpuSolver<Real>::stableDt()
+{
+    const Grid<Real>& g = model_.g;
+    const Fields<Real> U = U_.view();
+    Real rate = Real(0);
+
+    #pragma omp parallel for if(parallel_) reduction(max:rate) schedule(static)
+    for (int j = 0; j < g.ny; ++j)
+    {
+        for (int i = 0; i < g.nx; ++i)
+        {
+            rate = shMax(rate, cellWaveRate(model_, U, i, j));
+        }
+    }
+    return rate > Real(0)
+        ? model_.p.cfl/rate
+        : std::numeric_limits<Real>::max();
+}
+
+
+template<class Real>
+void CpuSolver<Real>::step(Real dt)
+{
+    const Grid<Real>& g = model_.g;
+    const Model<Real>& m = model_;
+    const Fields<Real> U = U_.view();
+    const Fields<Real> Uh = Uh_.view();
+    const Fields<Real> Un = Unew_.view();
+    const Fields<Real> Fx = Fx_.view();
+    const Fields<Real> Fy = Fy_.view();
+    Real* theta = theta_.data();
+    const int nx = g.nx;
+    const int ny = g.ny;
+
+    fillGhosts(U);
+
+    #pragma omp parallel for if(parallel_) schedule(static)
+    for (int j = 0; j < ny; ++j)
+    {
+        for (int i = 0; i < nx; ++i)
+        {
+            predictorCell(m, U, Uh, dt, i, j);
+        }
+    }
+
+    fillGhosts(Uh);
+
+    // Each x-face i+1/2 for i = -1..nx-1, each y-face j+1/2 for j = -1..ny-1
+    #pragma omp parallel for if(parallel_) schedule(static)
+    for (int j = -1; j < ny; ++j)
+    {
+        for (int i = -1; i < nx; ++i)
+        {
+            const int c = g.idx(i, j);
+            if (j >= 0)
+            {
+                Fx.set(c, fluxX(m, Uh, i, j));
+            }
+            if (i >= 0)
+            {
+                Fy.set(c, fluxY(m, Uh, i, j));
+            }
+        }
+    }
+
+    #pragma omp parallel for if(parallel_) schedule(static)
+    for (int j = 0; j < ny; ++j)
+    {
+        for (int i = 0; i < nx; ++i)
+        {
+            theta[g.idx(i, j)] = drainFactor(m, U, Fx, Fy, dt, i, j);
+        }
+    }
+
+    #pragma omp parallel for if(parallel_) schedule(static)
+    for (int j = 0; j < ny; ++j)
+    {
+        for (int i = 0; i < nx; ++i)
+        {
+            correctorCell(m, U, Uh, Fx, Fy, theta, Un, dt, i, j);
+        }
+    }
+
+    #pragma omp parallel for if(parallel_) schedule(static)
+    for (int j = 0; j < ny; ++j)
+    {
+        for (int i = 0; i < nx; ++i)
+        {
+            partialWetCell(m, Un, i, j);
+        }
+    }
+
+    std::swap(U_, Unew_);
+    ++this->steps_;
+}
+
+
+template<class Real>
+void CpuSolver<Real>::getState
+(
+    std::vector<Real>& h,
+    std::vector<Real>& hu,
+    std::vector<Real>& hv
+)
+{
+    const Grid<Real>& g = model_.g;
+    const std::size_t n = std::size_t(g.nx)*g.ny;
+    h.resize(n);
+    hu.resize(n);
+    hv.resize(n);
+    for (int j = 0; j < g.ny; ++j)
+    {
+        for (int i = 0; i < g.nx; ++i)
+        {
+            const int c = g.idx(i, j);
+            const std::size_t k = i + std::size_t(j)*g.nx;
+            h[k] = U_.h[c];
+            hu[k] = U_.hu[c];
+            hv[k] = U_.hv[c];
+        }
+    }
+}
+
+template class CpuSolver<double>;
+template class CpuSolver<float>;
+
+} // namespace sh

@@ -1,0 +1,62 @@
+/*---------------------------------------------------------------------------*\
+  savageHutterFoam: Savage-Hutter granular avalanche solver
+
+Description
+    Compiles every pointwise stage of physics/scheme.H as device code, for
+    float and double.  Built whenever nvcc is present, so a change to the
+    physics that nvcc cannot compile fails the build on any machine, with or
+    without a GPU.
+\*---------------------------------------------------------------------------*/
+
+#include "physics/scheme.H"
+
+namespace sh
+{
+
+template<class Real>
+__global__ void allStagesKernel
+(
+    Model<Real> m,
+    Fields<Real> U,
+    Fields<Real> Uh,
+    Fields<Real> Fx,
+    Fields<Real> Fy,
+    Real* theta,
+    Fields<Real> Unew,
+    Real dt,
+    Real* rate
+)
+{
+    const int i = blockIdx.x*blockDim.x + threadIdx.x;
+    const int j = blockIdx.y*blockDim.y + threadIdx.y;
+    if (i >= m.g.nx || j >= m.g.ny)
+    {
+        return;
+    }
+    fillGhostCell(m, U, xMin, -1, j);
+    predictorCell(m, U, Uh, dt, i, j);
+    Fx.set(m.g.idx(i, j), fluxX(m, Uh, i, j));
+    Fy.set(m.g.idx(i, j), fluxY(m, Uh, i, j));
+    theta[m.g.idx(i, j)] = drainFactor(m, U, Fx, Fy, dt, i, j);
+    correctorCell(m, U, Uh, Fx, Fy, theta, Unew, dt, i, j);
+    partialWetCell(m, Unew, i, j);
+    rate[m.g.idx(i, j)] = cellWaveRate(m, U, i, j);
+    if (i == 0 && j == 0)
+    {
+        rate[0] += activePassiveCoeffs<Real>(Real(0.6), Real(0.4)).kxMax
+                 + isotropicCoeffs<Real>().kyMax;
+    }
+}
+
+template __global__ void allStagesKernel<double>
+(
+    Model<double>, Fields<double>, Fields<double>, Fields<double>,
+    Fields<double>, double*, Fields<double>, double, double*
+);
+template __global__ void allStagesKernel<float>
+(
+    Model<float>, Fields<float>, Fields<float>, Fields<float>,
+    Fields<float>, float*, Fields<float>, float, float*
+);
+
+} // namespace sh
