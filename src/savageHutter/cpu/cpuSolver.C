@@ -110,7 +110,7 @@ Real CpuSolver<Real>::stableDt()
 
 
 template<class Real>
-void CpuSolver<Real>::step(Real dt)
+void CpuSolver<Real>::advanceStep(Real dt)
 {
     const Grid<Real>& g = model_.g;
     const Model<Real>& m = model_;
@@ -182,7 +182,6 @@ void CpuSolver<Real>::step(Real dt)
     }
 
     std::swap(U_, Unew_);
-    ++this->steps_;
 }
 
 

@@ -211,6 +211,7 @@ Params<Real> makeParams(const ModelInput& in)
     p.limiter = in.limiter;
     p.stoppingCriterion = in.stoppingCriterion;
     p.staticResistance = in.staticResistance;
+    p.holdResting = in.holdResting;
     p.hDry = Real(in.hDry);
     p.cfl = Real(in.cfl);
     return p;
