@@ -328,6 +328,36 @@ void closedBoxMass(Counter& t)
 }
 
 
+void inflowBoundary(Counter& t)
+{
+    std::printf("\nPrescribed inflow (supercritical, into a dry channel)\n");
+    ModelInput in = defaultInput();
+    in.deltaDeg = 0;
+    in.earthPressure = EarthPressureModel::isotropic;
+    const double W = 0.2, h0 = 0.1, u0 = 3.0, tEnd = 0.5;
+    Problem<double> pb(makeParams<double>(in), 80, 4, 0, 4, 0, W);
+    pb.bc.type[xMin] = BCType::inflow;
+    pb.bc.inflow[xMin] = {h0, h0*u0, 0};
+    pb.bc.type[yMin] = BCType::wall;
+    pb.bc.type[yMax] = BCType::wall;
+    CpuSolver<double> s(pb, false);
+    s.advanceTo(tEnd);
+    std::vector<double> h, hu, hv;
+    s.getState(h, hu, hv);
+    double v = 0;
+    for (const double x : h) { v += x; }
+    v *= pb.grid.dx*pb.grid.dy;
+    // Froude number 3: the inflow face carries F(U_in) exactly, the front
+    // (at most u + 2c = 5 m/s) has not reached x = 4
+    const double expected = h0*u0*W*tEnd;
+    std::printf("  volume %.15g, inflow h u W t = %.15g, h(inlet cell) %.6f, "
+                "u %.6f, hv max %.1e\n", v, expected, h[0], hu[0]/h[0],
+        std::fabs(*std::max_element(hv.begin(), hv.end())));
+    t.check(std::fabs(v - expected) <= 1e-12*expected, "volume equals the inflow h u W t to round-off");
+    t.check(std::fabs(h[0] - h0) < 1e-3*h0 && std::fabs(hu[0] - h0*u0) < 1e-3*h0*u0,
+        "inlet cell carries the prescribed state");
+}
+
 //- Mirror a snapshot: x -> -x (hu negated) or y -> -y (hv negated)
 Snapshot mirror(const Snapshot& a, int nx, int ny, bool inX)
 {
@@ -490,6 +520,7 @@ int main()
     frictionNeverReverses(t);
     positivity(t);
     closedBoxMass(t);
+    inflowBoundary(t);
     mirrorSymmetry(t);
     serialOpenMPFloat(t);
     return t.finish();

@@ -93,7 +93,7 @@ Real CpuSolver<Real>::stableDt()
 {
     const Grid<Real>& g = model_.g;
     const Fields<Real> U = U_.view();
-    Real rate = Real(0);
+    Real rate = inflowWaveRate(model_);
 
     #pragma omp parallel for if(parallel_) reduction(max:rate) schedule(static)
     for (int j = 0; j < g.ny; ++j)
