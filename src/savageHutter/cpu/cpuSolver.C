@@ -9,6 +9,22 @@
 namespace sh
 {
 
+namespace
+{
+
+template<class Real>
+void store(const FaceFields<Real>& F, int c, const FaceFlux<Real>& f)
+{
+    F.h[c] = f.F.h;
+    F.hu[c] = f.F.hu;
+    F.hv[c] = f.F.hv;
+    F.pLow[c] = f.pLow;
+    F.pHigh[c] = f.pHigh;
+}
+
+} // namespace
+
+
 template<class Real>
 CpuSolver<Real>::CpuSolver(const Problem<Real>& pb, bool parallel)
 :
@@ -117,8 +133,8 @@ void CpuSolver<Real>::advanceStep(Real dt)
     const Fields<Real> U = U_.view();
     const Fields<Real> Uh = Uh_.view();
     const Fields<Real> Un = Unew_.view();
-    const Fields<Real> Fx = Fx_.view();
-    const Fields<Real> Fy = Fy_.view();
+    const FaceFields<Real> Fx = Fx_.view();
+    const FaceFields<Real> Fy = Fy_.view();
     Real* theta = theta_.data();
     const int nx = g.nx;
     const int ny = g.ny;
@@ -145,11 +161,11 @@ void CpuSolver<Real>::advanceStep(Real dt)
             const int c = g.idx(i, j);
             if (j >= 0)
             {
-                Fx.set(c, fluxX(m, Uh, i, j));
+                store(Fx, c, fluxX(m, Uh, i, j));
             }
             if (i >= 0)
             {
-                Fy.set(c, fluxY(m, Uh, i, j));
+                store(Fy, c, fluxY(m, Uh, i, j));
             }
         }
     }

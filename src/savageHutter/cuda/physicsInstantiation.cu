@@ -19,8 +19,8 @@ __global__ void allStagesKernel
     Model<Real> m,
     Fields<Real> U,
     Fields<Real> Uh,
-    Fields<Real> Fx,
-    Fields<Real> Fy,
+    FaceFields<Real> Fx,
+    FaceFields<Real> Fy,
     Real* theta,
     Fields<Real> Unew,
     Real dt,
@@ -35,8 +35,10 @@ __global__ void allStagesKernel
     }
     fillGhostCell(m, U, xMin, -1, j);
     predictorCell(m, U, Uh, dt, i, j);
-    Fx.set(m.g.idx(i, j), fluxX(m, Uh, i, j));
-    Fy.set(m.g.idx(i, j), fluxY(m, Uh, i, j));
+    const FaceFlux<Real> fx = fluxX(m, Uh, i, j);
+    const FaceFlux<Real> fy = fluxY(m, Uh, i, j);
+    Fx.h[m.g.idx(i, j)] = fx.F.h + fx.pLow + fx.pHigh;
+    Fy.h[m.g.idx(i, j)] = fy.F.h + fy.pLow + fy.pHigh;
     theta[m.g.idx(i, j)] = drainFactor(m, U, Fx, Fy, dt, i, j);
     correctorCell(m, U, Uh, Fx, Fy, theta, Unew, dt, i, j);
     partialWetCell(m, Unew, i, j);
@@ -50,13 +52,13 @@ __global__ void allStagesKernel
 
 template __global__ void allStagesKernel<double>
 (
-    Model<double>, Fields<double>, Fields<double>, Fields<double>,
-    Fields<double>, double*, Fields<double>, double, double*
+    Model<double>, Fields<double>, Fields<double>, FaceFields<double>,
+    FaceFields<double>, double*, Fields<double>, double, double*
 );
 template __global__ void allStagesKernel<float>
 (
-    Model<float>, Fields<float>, Fields<float>, Fields<float>,
-    Fields<float>, float*, Fields<float>, float, float*
+    Model<float>, Fields<float>, Fields<float>, FaceFields<float>,
+    FaceFields<float>, float*, Fields<float>, float, float*
 );
 
 } // namespace sh
