@@ -4,7 +4,8 @@
     The pile of staticPile with delta = phi = 20 deg: its free surface
     (26.6 deg) is steeper than the friction angles, so it must slump, then
     come to rest in the bowl: by t = 4 s every momentum is exactly zero.
-    K = 1 as in staticPile (the paper's choice for section 5.2).  Walls on
+    K = 1 (isotropic), as the exact solutions of section 5 assume; with
+    active/passive K thin films at the margin keep creeping (README).  Walls on
     all sides, so the volume must be conserved to round-off.  64x64 cells
     (on 128x128 a few cells near limit equilibrium creep at ~1e-4 m/s
     until t = 6 s).

@@ -135,7 +135,7 @@ void earthPressure(Counter& t)
     t.check(close(K.ky[1][0], 0.871318332798, 1e-10)
          && close(K.ky[1][1], 2.613954998395, 1e-10), "Ky act/pass with Kx pass = 0.871318333 / 2.613954998");
 
-    // delta = 0: Rankine's (1 -+ sin phi)/(1 +- sin phi); Ky = Kx
+    // delta = 0: Rankine's (1 -+ sin phi)/(1 +- sin phi)
     const EarthPressureCoeffs<double> R = activePassiveCoeffs(35*deg, 0.0);
     t.check(close(R.kx[0], 0.270990054120, 1e-10) && close(R.kx[1], 3.690172332143, 1e-10),
         "delta = 0 gives Rankine's coefficients 0.27099 / 3.69017");
@@ -251,17 +251,194 @@ void frictionNeverReverses(Counter& t)
         if (rest && !stopped) { stopped = true; stopStep = n; }
         neverReversed = neverReversed && (!stopped || rest);
     }
-    // Deceleration g (cos 10 tan 30 - sin 10 u/|u|) brings |v| = 2.236
-    // to rest after about 0.5 s
     std::printf("  came to rest at step %d (t = %.3f s)\n", stopStep, (stopStep + 1)*1e-3);
-    t.check(neverReversed, "sliding layer: u, v never negative, rest is final");
-    t.check(stopped && stopStep > 300 && stopStep < 800, "and it comes to rest after 0.3-0.8 s");
+    t.check(neverReversed && stopped, "sliding layer: u, v never negative, rest is final");
+
+    // Straight downslope: u decreases at g (cos(zeta) tan(delta) - sin(zeta))
+    // and stops at t = u0 / that; stays at rest since tan 10 < tan 30
+    pb.setState([](double, double) { return Primitive{0.05, 2.0, 0}; });
+    CpuSolver<double> s1(pb, false);
+    const double decel = 9.81*(std::cos(10*deg)*std::tan(30*deg) - std::sin(10*deg));
+    const double tStop = 2.0/decel;
+    double tSeen = -1;
+    for (int n = 0; n < 1000; ++n)
+    {
+        s1.step(1e-3);
+        std::vector<double> h, hu, hv;
+        s1.getState(h, hu, hv);
+        if (hu[0] == 0 && tSeen < 0) { tSeen = s1.time(); }
+        if (tSeen >= 0 && hu[0] != 0) { tSeen = -2; break; }
+    }
+    std::printf("  straight slide: stops at t = %.4f s, analytic %.4f s\n", tSeen, tStop);
+    t.check(std::fabs(tSeen - tStop) <= 1.5e-3,
+        "straight slide stops at u0/(g (cos tan(delta) - sin)) within a step, stays at rest");
 }
+
+
+void staticResistanceOnIncline(Counter& t)
+{
+    std::printf("\nStatic resistance of a layer at rest on an incline, delta = 25 deg\n");
+    // At rest the load along the slope is h g sin(zeta) against a Coulomb
+    // threshold h tan(delta) g cos(zeta): it holds for zeta < delta only
+    for (const double zetaDeg : {24.0, 26.0})
+    {
+        ModelInput in = defaultInput();
+        in.deltaDeg = 25;
+        Problem<double> pb(makeParams<double>(in), 6, 6, 0, 1, 0, 1);
+        pb.setInclination([&](double) { return zetaDeg*deg; });
+        pb.setState([](double, double) { return Primitive{0.3, 0, 0}; });
+        CpuSolver<double> s(pb, false);
+        const Snapshot r = run(s, 10);
+        const bool rest = r.hu[14] == 0 && r.hv[14] == 0;
+        std::printf("  zeta = %g deg: u = %.4g m/s after 10 steps\n", zetaDeg, r.hu[14]/r.h[14]);
+        t.check(zetaDeg < 25 ? rest : (!rest && r.hu[14] > 0),
+            zetaDeg < 25 ? "zeta = 24: held exactly at rest" : "zeta = 26: yields and slides down");
+    }
+}
+
+
+void transposition(Counter& t)
+{
+    std::printf("\nTransposition: x <-> y with dx != dy (zeta = 0, K = 1)\n");
+    // The same flow on a grid and on its transpose, with the topography,
+    // state and boundary conditions transposed: every dx/dy and x/y flux
+    // must be used in its own place for the two to agree
+    ModelInput in = defaultInput();
+    in.earthPressure = EarthPressureModel::isotropic;
+    const int nx = 36, ny = 24;
+    const double Lx = 3.6, Ly = 1.2;
+    auto zb = [](double x, double y) { return 0.04*x*x - 0.1*x*y + 0.05*y; };
+    auto state = [](double x, double y)
+    {
+        const double r2 = (x - 1.5)*(x - 1.5)/0.8 + (y - 0.5)*(y - 0.5)/0.2;
+        return Primitive{r2 < 1 ? 0.3*(1 - r2) : 0, 1.2*y - 0.3, -0.8*x + 0.6};
+    };
+    Problem<double> pa(makeParams<double>(in), nx, ny, 0, Lx, 0, Ly);
+    pa.setTopography(zb);
+    pa.setState(state);
+    pa.bc.type[xMin] = BCType::wall;
+    pa.bc.type[yMax] = BCType::wall;
+    Problem<double> pb(makeParams<double>(in), ny, nx, 0, Ly, 0, Lx);
+    pb.setTopography([&](double x, double y) { return zb(y, x); });
+    pb.setState([&](double x, double y)
+    {
+        const Primitive q = state(y, x);
+        return Primitive{q.h, q.v, q.u};
+    });
+    pb.bc.type[yMin] = BCType::wall;
+    pb.bc.type[xMax] = BCType::wall;
+
+    CpuSolver<double> sa(pa, false), sb(pb, false);
+    for (int n = 0; n < 60; ++n)
+    {
+        const double dt = std::min(double(sa.stableDt()), double(sb.stableDt()));
+        sa.step(dt);
+        sb.step(dt);
+    }
+    Snapshot a, b;
+    sa.getState(a.h, a.hu, a.hv);
+    sb.getState(b.h, b.hu, b.hv);
+    double dev = 0, scale = 0;
+    for (int j = 0; j < ny; ++j)
+    {
+        for (int i = 0; i < nx; ++i)
+        {
+            const int ca = i + j*nx, cb = j + i*ny;
+            dev = std::max(dev, std::fabs(a.h[ca] - b.h[cb]));
+            dev = std::max(dev, std::fabs(a.hu[ca] - b.hv[cb]));
+            dev = std::max(dev, std::fabs(a.hv[ca] - b.hu[cb]));
+            scale = std::max(scale, std::fabs(a.hu[ca]) + a.h[ca]);
+        }
+    }
+    std::printf("  max deviation after 60 steps %.2e (state scale %.2f)\n", dev, scale);
+    // Only the order of the x and y additions differs: round-off
+    t.check(dev <= 1e-12*scale, "transposed run equals the transpose of the run to round-off");
+}
+
+
+void curvedBedAcceleration(Counter& t)
+{
+    std::printf("\nAcceleration of a uniform layer on a curved bed, first step\n");
+    // zeta(x) = zeta0 - kappa0 x, so kappa = kappa0.  For a uniform layer
+    // (h, u) eqs (2), (5): du/dt = g sin(zeta) - tan(delta) (g cos(zeta)
+    // + lambda kappa u^2) - (h/2) d(beta)/dx, with d(beta)/dx =
+    // eps g K kappa sin(zeta) (beta inside the derivative, eq. 2)
+    ModelInput in = defaultInput();
+    in.earthPressure = EarthPressureModel::isotropic;
+    in.deltaDeg = 20;
+    in.lambda = 1;
+    const double zeta0 = 30*deg, kappa0 = 0.5, h = 0.4, u = 3.0;
+    Problem<double> pb(makeParams<double>(in), 81, 4, -0.405, 0.405, 0, 0.04);
+    pb.setInclination([&](double x) { return zeta0 - kappa0*x; });
+    pb.setState([&](double, double) { return Primitive{h, u, 0}; });
+    CpuSolver<double> s(pb, false);
+    const double dt = 1e-5;
+    s.step(dt);
+    std::vector<double> hh, hu, hv;
+    s.getState(hh, hu, hv);
+    const int c = pb.cell(40, 2);
+    const double z = pb.zeta[40];
+    const double g = 9.81;
+    const double expected = g*std::sin(z)
+        - std::tan(20*deg)*(g*std::cos(z) + kappa0*u*u)
+        - 0.5*h*g*kappa0*std::sin(z);
+    const double seen = (hu[c]/hh[c] - u)/dt;
+    std::printf("  du/dt = %.6f, analytic %.6f\n", seen, expected);
+    // In this supersonic flow the flux takes beta from the upwind cell, so
+    // d(beta)/dx is first order: ~2e-3 m/s^2 here.  The terms themselves
+    // are of order g, so a tolerance of 1e-3 g still catches a wrong sign
+    // or factor in any of them.
+    t.check(std::fabs(seen - expected) < 1e-3*g,
+        "matches gravity, Coulomb friction with the curvature load, and the pressure of a varying beta");
+}
+
+
+void thinCells(Counter& t)
+{
+    std::printf("\nThin cells at a vacuum front keep physical velocities\n");
+    // A disc moving inward at 8 m/s inside a layer moving outward at 8 m/s
+    // opens an empty ring; draining cells must not reach absurd speeds and
+    // collapse the time step
+    ModelInput in = defaultInput();
+    in.deltaDeg = 0;
+    const int n = 100;
+    Problem<double> pb(makeParams<double>(in), n, n, -1, 1, -1, 1);
+    pb.bc.type[xMin] = pb.bc.type[xMax] = BCType::wall;
+    pb.setState([](double x, double y)
+    {
+        const double r = std::max(std::hypot(x, y), 1e-9);
+        const double s = r < 0.5 ? -8 : 8;
+        return Primitive{1, s*x/r, s*y/r};
+    });
+    CpuSolver<double> s(pb, false);
+    const double dt0 = s.stableDt();
+    double dtMin = dt0, umax = 0;
+    for (int k = 0; k < 400; ++k)
+    {
+        const double dt = s.stableDt();
+        dtMin = std::min(dtMin, dt);
+        s.step(dt);
+        std::vector<double> h, hu, hv;
+        s.getState(h, hu, hv);
+        for (std::size_t c = 0; c < h.size(); ++c)
+        {
+            if (h[c] > 0) { umax = std::max(umax, std::hypot(hu[c], hv[c])/h[c]); }
+        }
+    }
+    std::printf("  400 steps to t = %.4f: dt min/initial %.2f, max speed %.1f m/s\n",
+        s.time(), dtMin/dt0, umax);
+    t.check(dtMin > 0.25*dt0 && umax < 40,
+        "time step stays above 1/4 of its initial value, speeds below 40 m/s");
+}
+
+
+
 
 
 void positivity(Counter& t)
 {
-    std::printf("\nNon-negative h across wet/dry Riemann problems (all limiters)\n");
+    std::printf("\nNon-negative h across wet/dry Riemann problems (all limiters, "
+                "walls at both ends)\n");
     struct Case { const char* name; double hL, uL, hR, uR; };
     const Case cases[] =
     {
@@ -279,15 +456,25 @@ void positivity(Counter& t)
             in.limiter = parseLimiter(lim);
             in.deltaDeg = 0;
             Problem<double> pb(makeParams<double>(in), 100, 4, -1, 1, 0, 0.08);
+            pb.bc.type[xMin] = BCType::wall;
+            pb.bc.type[xMax] = BCType::wall;
             pb.setState([&](double x, double)
             {
                 return x < 0 ? Primitive{c.hL, c.uL, 0} : Primitive{c.hR, c.uR, 0};
             });
+            const double v0 = pb.volume();
             CpuSolver<double> s(pb, false);
             const Snapshot r = run(s, 150);
+            double v = 0;
+            for (const double h : r.h) { v += h; }
+            v *= pb.grid.dx*pb.grid.dy;
+            // h is clipped at 0 only against round-off: real clipping
+            // would show as a gain of volume
+            const double dv = std::fabs(v - v0)/v0;
             const double hmin = minOf(r.h);
-            t.check(hmin >= 0 && allFinite(r),
-                std::string(c.name) + ", " + lim + fmt(": min h = %g", hmin));
+            t.check(hmin >= 0 && dv < 1e-13 && allFinite(r),
+                std::string(c.name) + ", " + lim
+              + fmt(": min h = %g, volume change %.1e", hmin, dv));
         }
     }
 }
@@ -486,8 +673,15 @@ void serialOpenMPFloat(Counter& t)
     const Snapshot a = inclinedPlane<double>(in, false, &n1, &s1);
     const Snapshot b = inclinedPlane<double>(in, true, &n2, &s2);
     std::printf("  %s vs %s, %ld steps\n", s1.c_str(), s2.c_str(), n1);
-    t.check(a.h == b.h && a.hu == b.hu && a.hv == b.hv && n1 == n2,
-        "OpenMP gives bit-identical results to serial");
+    if (s2.find("OpenMP") == std::string::npos || s2.find(" 1 threads") != std::string::npos)
+    {
+        t.skip("OpenMP bit-identical to serial", "fewer than two OpenMP threads here");
+    }
+    else
+    {
+        t.check(a.h == b.h && a.hu == b.hu && a.hv == b.hv && n1 == n2,
+            "OpenMP gives bit-identical results to serial");
+    }
 
     // Single precision carries ~1e-7 relative rounding per operation; with
     // K = 1 the flow depends smoothly on it and 1e-5 bounds the drift
@@ -518,10 +712,14 @@ int main()
     earthPressure(t);
     inputValidation(t);
     frictionNeverReverses(t);
+    staticResistanceOnIncline(t);
+    curvedBedAcceleration(t);
     positivity(t);
+    thinCells(t);
     closedBoxMass(t);
     inflowBoundary(t);
     mirrorSymmetry(t);
+    transposition(t);
     serialOpenMPFloat(t);
     return t.finish();
 }

@@ -35,10 +35,13 @@ __global__ void allStagesKernel
     }
     fillGhostCell(m, U, xMin, -1, j);
     predictorCell(m, U, Uh, dt, i, j);
+    // Not a solver: every stage once, so that each is compiled
     const FaceFlux<Real> fx = fluxX(m, Uh, i, j);
     const FaceFlux<Real> fy = fluxY(m, Uh, i, j);
-    Fx.h[m.g.idx(i, j)] = fx.F.h + fx.pLow + fx.pHigh;
-    Fy.h[m.g.idx(i, j)] = fy.F.h + fy.pLow + fy.pHigh;
+    Fx.pLow[m.g.idx(i, j)] = fx.pLow;
+    Fx.pHigh[m.g.idx(i, j)] = fx.pHigh;
+    Fy.pLow[m.g.idx(i, j)] = fy.pLow;
+    Fy.pHigh[m.g.idx(i, j)] = fy.pHigh;
     theta[m.g.idx(i, j)] = drainFactor(m, U, Fx, Fy, dt, i, j);
     correctorCell(m, U, Uh, Fx, Fy, theta, Unew, dt, i, j);
     partialWetCell(m, Unew, i, j);

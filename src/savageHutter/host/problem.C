@@ -1,4 +1,5 @@
 #include "problem.H"
+#include "modelInput.H"
 
 #include <cmath>
 #include <stdexcept>
@@ -46,7 +47,18 @@ void Problem<Real>::setInclination(const std::function<double(double)>& z)
     for (int i = 0; i < grid.nx; ++i)
     {
         const double x = double(grid.x0) + (i + 0.5)*dx;
-        zeta[i] = Real(z(x));
+        const double zx = z(x);
+        if (!(std::fabs(zx) < 0.5*3.14159265358979323846))
+        {
+            throw InputError
+            (
+                "inclination",
+                "zeta(x = " + std::to_string(x) + ") = "
+              + std::to_string(zx*180/3.14159265358979323846)
+              + " deg: the inclination must lie in (-90, 90) degrees"
+            );
+        }
+        zeta[i] = Real(zx);
         kappa[i] = Real(-(z(x + 0.5*dx) - z(x - 0.5*dx))/dx);
     }
 }
