@@ -1,5 +1,6 @@
 #include "cpuSolver.H"
 
+#include <algorithm>
 #include <limits>
 
 #ifdef _OPENMP
@@ -225,6 +226,37 @@ void CpuSolver<Real>::getState
             hv[k] = U_.hv[c];
         }
     }
+}
+
+template<class Real>
+Diagnostics CpuSolver<Real>::diagnostics()
+{
+    const Grid<Real>& g = model_.g;
+    const Fields<Real> U = U_.view();
+    Diagnostics d;
+    double sumH = 0;
+    for (int j = 0; j < g.ny; ++j)
+    {
+        for (int i = 0; i < g.nx; ++i)
+        {
+            const int c = g.idx(i, j);
+            const Real h = U.h[c];
+            sumH += double(h);
+            d.hMax = std::max(d.hMax, double(h));
+            d.maxRate =
+                std::max(d.maxRate, double(cellWaveRate(model_, U, i, j)));
+            if (h > model_.p.hDry)
+            {
+                ++d.wetCells;
+                if (U.hu[c] != Real(0) || U.hv[c] != Real(0))
+                {
+                    ++d.movingCells;
+                }
+            }
+        }
+    }
+    d.volume = sumH*double(g.dx)*double(g.dy);
+    return d;
 }
 
 template class CpuSolver<double>;
