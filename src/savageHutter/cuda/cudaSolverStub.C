@@ -1,0 +1,46 @@
+/*---------------------------------------------------------------------------*\
+  savageHutterFoam: Savage-Hutter granular avalanche solver
+
+Description
+    The CUDA entry points of a build without nvcc: no device can be used,
+    and asking for the backend says so.
+\*---------------------------------------------------------------------------*/
+
+#include "cudaSolver.H"
+
+#include <stdexcept>
+
+namespace sh
+{
+
+namespace
+{
+
+const char* const notBuilt =
+    "this build of savageHutter has no CUDA backend (nvcc was not found "
+    "when it was configured; reconfigure with nvcc on the PATH or in "
+    "/usr/local/cuda)";
+
+} // namespace
+
+
+bool cudaAvailable(std::string* why)
+{
+    if (why)
+    {
+        *why = notBuilt;
+    }
+    return false;
+}
+
+
+template<class Real>
+std::unique_ptr<Solver<Real>> makeCudaSolver(const Problem<Real>&)
+{
+    throw std::runtime_error(std::string("CUDA backend: ") + notBuilt);
+}
+
+template std::unique_ptr<Solver<double>> makeCudaSolver(const Problem<double>&);
+template std::unique_ptr<Solver<float>> makeCudaSolver(const Problem<float>&);
+
+} // namespace sh
