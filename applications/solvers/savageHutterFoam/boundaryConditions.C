@@ -1,0 +1,148 @@
+/*---------------------------------------------------------------------------*\
+  savageHutterFoam: Savage-Hutter granular avalanche solver
+\*---------------------------------------------------------------------------*/
+
+#include "boundaryConditions.H"
+
+namespace Foam
+{
+
+namespace
+{
+
+const char* supported =
+    "Supported (h / U):\n"
+    "    zeroGradient  / zeroGradient   transmissive outflow\n"
+    "    zeroGradient  / slip           reflective wall\n"
+    "    symmetryPlane / symmetryPlane  (or symmetry) mirror, as a wall\n"
+    "    fixedValue    / fixedValue     inflow of a uniform (h, U)\n"
+    "    empty         / empty          only across a direction one cell"
+    " wide (1D)";
+
+sideCondition classify
+(
+    const structuredMesh& smesh,
+    const label side,
+    const label patchi,
+    const volScalarField& h,
+    const volVectorField& U
+)
+{
+    const fvPatchScalarField& hp = h.boundaryField()[patchi];
+    const fvPatchVectorField& Up = U.boundaryField()[patchi];
+    const word& ht = hp.type();
+    const word& Ut = Up.type();
+
+    sideCondition c;
+    c.patch = hp.patch().name();
+
+    const bool oneCellAcross =
+        (side < 2 && smesh.nx() == 1) || (side >= 2 && smesh.ny() == 1);
+
+    if (ht == "zeroGradient" && Ut == "zeroGradient")
+    {
+        c.type = sh::BCType::transmissive;
+    }
+    else if (ht == "zeroGradient" && Ut == "slip")
+    {
+        c.type = sh::BCType::wall;
+    }
+    else if
+    (
+        (ht == "symmetryPlane" || ht == "symmetry")
+     && (Ut == "symmetryPlane" || Ut == "symmetry")
+    )
+    {
+        c.type = sh::BCType::wall;
+    }
+    else if (ht == "empty" && Ut == "empty" && oneCellAcross)
+    {
+        c.type = sh::BCType::wall;
+    }
+    else if (ht == "fixedValue" && Ut == "fixedValue")
+    {
+        c.type = sh::BCType::inflow;
+        if (hp.empty())
+        {
+            return c;
+        }
+        c.h = hp[0];
+        c.U = Up[0];
+        forAll(hp, facei)
+        {
+            if
+            (
+                mag(hp[facei] - c.h) > 1e-12*(1 + mag(c.h))
+             || mag(Up[facei] - c.U) > 1e-12*(1 + mag(c.U))
+            )
+            {
+                FatalIOErrorInFunction(h.objectPath())
+                    << "Patch " << c.patch << ": fixedValue inflow must be"
+                    << " uniform along the patch; face " << facei
+                    << " has h = " << hp[facei] << ", U = " << Up[facei]
+                    << ", face 0 h = " << c.h << ", U = " << c.U << nl
+                    << exit(FatalIOError);
+            }
+        }
+        if (!std::isfinite(c.h) || c.h < 0)
+        {
+            FatalIOErrorInFunction(h.objectPath())
+                << "Patch " << c.patch << ": inflow thickness h = " << c.h
+                << " must be finite and >= 0" << nl << exit(FatalIOError);
+        }
+    }
+    else
+    {
+        FatalIOErrorInFunction(U.objectPath())
+            << "Patch " << c.patch << " (side "
+            << structuredMesh::sideNames[side] << "): unsupported boundary"
+            << " condition " << ht << " on h with " << Ut << " on U." << nl
+            << supported << nl << exit(FatalIOError);
+    }
+    return c;
+}
+
+} // namespace
+
+
+FixedList<sideCondition, 4> readBoundaryConditions
+(
+    const structuredMesh& smesh,
+    const volScalarField& h,
+    const volVectorField& U
+)
+{
+    FixedList<sideCondition, 4> sides;
+    for (label s = 0; s < 4; ++s)
+    {
+        const labelList& patches = smesh.sidePatches(s);
+        if (patches.empty())
+        {
+            FatalErrorInFunction
+                << "No patch covers side " << structuredMesh::sideNames[s]
+                << " of the mesh" << nl << exit(FatalError);
+        }
+        sides[s] = classify(smesh, s, patches[0], h, U);
+        for (label k = 1; k < patches.size(); ++k)
+        {
+            const sideCondition other = classify(smesh, s, patches[k], h, U);
+            if
+            (
+                other.type != sides[s].type
+             || mag(other.h - sides[s].h) > 1e-12*(1 + mag(sides[s].h))
+             || mag(other.U - sides[s].U) > 1e-12*(1 + mag(sides[s].U))
+            )
+            {
+                FatalIOErrorInFunction(U.objectPath())
+                    << "Side " << structuredMesh::sideNames[s]
+                    << " has patches " << sides[s].patch << " and "
+                    << other.patch << " with different conditions; one"
+                    << " condition per side of the block is supported."
+                    << nl << exit(FatalIOError);
+            }
+        }
+    }
+    return sides;
+}
+
+} // End namespace Foam

@@ -1,0 +1,474 @@
+/*---------------------------------------------------------------------------*\
+  savageHutterFoam: Savage-Hutter granular avalanche solver
+
+Application
+    savageHutterFoam
+
+Description
+    Transient solver of the Savage-Hutter equations of granular avalanche
+    flow over a curved reference surface with basal topography, by Davis's
+    predictor-corrector Godunov scheme with MUSCL reconstruction, HLLC flux,
+    static resistance, stopping criterion and partial-wet cells (Zhai, Yuan,
+    Liu, Zhang 2014).
+
+    The case is read here (mesh, fields h, U and optional zb,
+    transportProperties, fvSolution::savageHutter, controlDict); the run
+    happens in the solver core (src/savageHutter) on the CPU or the GPU.
+    Time steps follow the CFL condition of eq. (24) with maxCo and hit the
+    write times exactly.
+
+    Written at write times: h, U, hU (the conserved momentum, read back on
+    restart so that a restart continues exactly), zb and regime (0 dry,
+    1 at rest, 2 moving).
+
+Usage
+    savageHutterFoam [-backend auto|cpu|cuda] [-precision double|single]
+                     [-logInterval seconds]
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "structuredMesh.H"
+#include "boundaryConditions.H"
+#include "caseInput.H"
+#include "host/problem.H"
+#include "cpu/cpuSolver.H"
+#include "cuda/cudaSolver.H"
+
+#include <chrono>
+#include <memory>
+
+namespace
+{
+
+using namespace Foam;
+using wallClock = std::chrono::steady_clock;
+
+double secondsSince(const wallClock::time_point& t0)
+{
+    return std::chrono::duration<double>(wallClock::now() - t0).count();
+}
+
+std::string hms(const double seconds)
+{
+    const long s = long(seconds + 0.5);
+    char buf[32];
+    snprintf(buf, sizeof(buf), "%ld:%02ld:%02ld", s/3600, (s/60)%60, s%60);
+    return buf;
+}
+
+
+//- The fields of a case and the structured view of its mesh
+struct avalancheCase
+{
+    Time& runTime;
+    const fvMesh& mesh;
+    structuredMesh smesh;
+    caseInput input;
+    volScalarField h;
+    volVectorField U;
+    volScalarField zb;
+    volVectorField hU;
+    volScalarField regime;
+    FixedList<sideCondition, 4> sides;
+    //- Momentum as written at the start time (exact restarts)
+    bool hasMomentum;
+
+    static IOobject io(const Time& t, const fvMesh& m, const word& name,
+                       IOobject::readOption r)
+    {
+        return IOobject(name, t.timeName(), m, r, IOobject::AUTO_WRITE);
+    }
+
+    static IOobject reading(const Time& t, const fvMesh& m, const word& name)
+    {
+        Info<< "Reading field " << name << endl;
+        return io(t, m, name, IOobject::MUST_READ);
+    }
+
+    avalancheCase(Time& t, const fvMesh& m)
+    :
+        runTime(t),
+        mesh(m),
+        smesh(m),
+        input(m),
+        h(reading(t, m, "h"), m),
+        U(reading(t, m, "U"), m),
+        zb(io(t, m, "zb", IOobject::READ_IF_PRESENT), m,
+            dimensionedScalar(dimLength, Zero)),
+        hU(io(t, m, "hU", IOobject::READ_IF_PRESENT), m,
+            dimensionedVector(dimLength*dimVelocity, Zero)),
+        regime(io(t, m, "regime", IOobject::NO_READ), m,
+            dimensionedScalar(dimless, Zero)),
+        sides(readBoundaryConditions(smesh, h, U)),
+        hasMomentum(io(t, m, "hU", IOobject::MUST_READ)
+            .typeHeaderOk<volVectorField>(true))
+    {
+        Info<< "Mesh: " << smesh.nx() << " x " << smesh.ny()
+            << " cells of " << smesh.dx() << " x " << smesh.dy()
+            << " m on [" << smesh.xMin() << ", " << smesh.xMax() << "] x ["
+            << smesh.yMin() << ", " << smesh.yMax() << "]" << nl;
+        for (label s = 0; s < 4; ++s)
+        {
+            const char* names[3] = {"transmissive", "wall", "inflow"};
+            Info<< "    " << structuredMesh::sideNames[s] << ": patch "
+                << sides[s].patch << ", " << names[int(sides[s].type)];
+            if (sides[s].type == sh::BCType::inflow)
+            {
+                Info<< " h " << sides[s].h << " U " << sides[s].U;
+            }
+            Info<< nl;
+        }
+        if (!io(t, m, "zb", IOobject::MUST_READ)
+            .typeHeaderOk<volScalarField>(true))
+        {
+            Info<< "No field zb: flat bed on the reference surface" << nl;
+        }
+        checkInitialFields();
+        Info<< endl;
+    }
+
+    void checkInitialFields() const
+    {
+        forAll(h, c)
+        {
+            if (!std::isfinite(h[c]) || h[c] < 0)
+            {
+                FatalIOErrorInFunction(h.objectPath())
+                    << "h = " << h[c] << " in cell " << c << " at "
+                    << mesh.C()[c] << ": the thickness must be finite and"
+                    << " >= 0" << nl << exit(FatalIOError);
+            }
+            const vector& u = hasMomentum ? hU[c] : U[c];
+            if (!std::isfinite(u.x()) || !std::isfinite(u.y()))
+            {
+                FatalIOErrorInFunction(U.objectPath())
+                    << (hasMomentum ? "hU = " : "U = ") << u << " in cell "
+                    << c << " is not finite" << nl << exit(FatalIOError);
+            }
+            if (!std::isfinite(zb[c]))
+            {
+                FatalIOErrorInFunction(zb.objectPath())
+                    << "zb = " << zb[c] << " in cell " << c
+                    << " is not finite" << nl << exit(FatalIOError);
+            }
+        }
+    }
+
+    //- The core's problem in precision Real
+    template<class Real>
+    sh::Problem<Real> problem() const
+    {
+        sh::Problem<Real> pb
+        (
+            input.params<Real>(),
+            smesh.nx(), smesh.ny(),
+            smesh.xMin(), smesh.xMax(), smesh.yMin(), smesh.yMax()
+        );
+        pb.bc = boundarySpec<Real>(sides);
+        try
+        {
+            const Function1<scalar>& zeta = input.inclination();
+            pb.setInclination
+            (
+                [&zeta](double x) { return degToRad(zeta.value(x)); }
+            );
+        }
+        catch (const sh::InputError& e)
+        {
+            input.fail(e);
+        }
+        forAll(h, c)
+        {
+            pb.zb[c] = Real(zb[c]);
+            pb.h[c] = Real(h[c]);
+            pb.hu[c] = Real(hasMomentum ? hU[c].x() : h[c]*U[c].x());
+            pb.hv[c] = Real(hasMomentum ? hU[c].y() : h[c]*U[c].y());
+        }
+        return pb;
+    }
+
+    //- Copy a state into the fields; false (fields untouched) when it is
+    //  not finite or has a negative thickness
+    template<class Real>
+    bool store
+    (
+        const std::vector<Real>& hs,
+        const std::vector<Real>& hus,
+        const std::vector<Real>& hvs
+    )
+    {
+        forAll(h, c)
+        {
+            if
+            (
+                !std::isfinite(double(hs[c])) || hs[c] < 0
+             || !std::isfinite(double(hus[c]))
+             || !std::isfinite(double(hvs[c]))
+            )
+            {
+                return false;
+            }
+        }
+        const scalar hDry = input.model.hDry;
+        forAll(h, c)
+        {
+            const scalar hc = hs[c];
+            const vector m(hus[c], hvs[c], 0);
+            h[c] = hc;
+            hU[c] = m;
+            U[c] = hc > 0 ? m/hc : vector::zero;
+            regime[c] =
+                hc <= hDry ? 0 : (m.x() != 0 || m.y() != 0 ? 2 : 1);
+        }
+        h.correctBoundaryConditions();
+        U.correctBoundaryConditions();
+        hU.correctBoundaryConditions();
+        regime.correctBoundaryConditions();
+        return true;
+    }
+
+    //- The time of the start directory to full precision: the name holds
+    //  writePrecision digits, uniform/time the value itself
+    void restoreStartTime()
+    {
+        IOobject timeIO
+        (
+            "time", runTime.timeName(), "uniform", runTime,
+            IOobject::READ_IF_PRESENT, IOobject::NO_WRITE, false
+        );
+        if (!timeIO.typeHeaderOk<IOdictionary>(true))
+        {
+            return;
+        }
+        const IOdictionary timeDict(timeIO);
+        scalar value;
+        if
+        (
+            timeDict.readIfPresent("value", value)
+         && mag(value - runTime.value()) <= 1e-6*max(mag(value), SMALL)
+        )
+        {
+            runTime.setTime(value, runTime.timeIndex());
+        }
+    }
+
+    //- Next write time after t on the grid of writeInterval, anchored at 0
+    //  when the start time lies on it (as after a restart), else at start
+    scalar nextWriteTime(const scalar t, const scalar anchor) const
+    {
+        const scalar w = input.writeInterval;
+        const scalar k = std::floor((t - anchor)/w + 1e-6) + 1;
+        return anchor + k*w;
+    }
+};
+
+
+template<class Real>
+std::unique_ptr<sh::Solver<Real>> selectBackend
+(
+    const word& backend,
+    const sh::Problem<Real>& pb
+)
+{
+    std::string why;
+    if (backend == "cuda" || (backend == "auto" && sh::cudaAvailable(&why)))
+    {
+        try
+        {
+            return sh::makeCudaSolver<Real>(pb);
+        }
+        catch (const std::exception& e)
+        {
+            FatalErrorInFunction
+                << "-backend " << backend << ": the CUDA backend cannot run"
+                << " here: " << e.what() << nl
+                << "Use -backend cpu." << nl << exit(FatalError);
+        }
+    }
+    if (backend == "auto")
+    {
+        Info<< "No usable GPU (" << why.c_str() << "): running on the CPU"
+            << nl;
+    }
+    return std::unique_ptr<sh::Solver<Real>>
+    (
+        new sh::CpuSolver<Real>(pb, true)
+    );
+}
+
+
+template<class Real>
+void run(avalancheCase& ac, const word& backend, const scalar logInterval)
+{
+    Time& runTime = ac.runTime;
+    const sh::Problem<Real> pb = ac.problem<Real>();
+    std::unique_ptr<sh::Solver<Real>> solver = selectBackend(backend, pb);
+
+    const scalar t0 = runTime.value();
+    const scalar endTime = runTime.endTime().value();
+    const scalar w = ac.input.writeInterval;
+    const scalar anchor =
+        mag(t0/w - std::round(t0/w)) < 1e-6 ? 0 : t0;
+    const label index0 = runTime.timeIndex();
+    const double nCells = double(pb.nCells());
+
+    solver->setTime(t0);
+    solver->setMaxDt(ac.input.maxDeltaT);
+
+    Info<< "Backend: " << solver->name().c_str() << ", "
+        << (sizeof(Real) == 8 ? "double" : "single") << " precision" << nl;
+
+    const sh::Diagnostics d0 = solver->diagnostics();
+    Info<< "Initial volume " << d0.volume << " m^3, " << d0.wetCells
+        << " wet cells, hMax " << d0.hMax << " m" << nl << nl
+        << "Starting time loop" << nl << endl;
+
+    const wallClock::time_point start = wallClock::now();
+    wallClock::time_point lastLog = start;
+
+    auto logProgress = [&]()
+    {
+        const sh::Diagnostics d = solver->diagnostics();
+        const double t = solver->time();
+        const double done = (t - t0)/max(endTime - t0, SMALL);
+        const double wall = secondsSince(start);
+        Info<< "Time = " << t << " (" << label(100*done) << "%)"
+            << "  deltaT = " << solver->lastDt()
+            << "  Co = " << solver->lastDt()*d.maxRate
+            << "  volume = " << d.volume
+            << "  wet = " << d.wetCells
+            << "  moving = " << d.movingCells
+            << "  steps = " << solver->steps()
+            << "  ETA "
+            << (done > 0 ? hms(wall*(1 - done)/done) : std::string("-")).c_str()
+            << endl;
+        if (!std::isfinite(d.volume))
+        {
+            FatalErrorInFunction
+                << "The solution is no longer finite at t = " << t
+                << "; nothing more is written" << nl << exit(FatalError);
+        }
+        lastLog = wallClock::now();
+    };
+
+    std::vector<Real> hs, hus, hvs;
+    while (solver->time() < endTime)
+    {
+        const scalar target =
+            min(ac.nextWriteTime(solver->time(), anchor), endTime);
+
+        while (true)
+        {
+            const double budget = logInterval - secondsSince(lastLog);
+            if (solver->advance(target, max(budget, 0.0)))
+            {
+                break;
+            }
+            logProgress();
+        }
+        if (secondsSince(lastLog) >= logInterval)
+        {
+            logProgress();
+        }
+
+        solver->getState(hs, hus, hvs);
+        if (!ac.store(hs, hus, hvs))
+        {
+            FatalErrorInFunction
+                << "The solution at t = " << target << " is not finite or"
+                << " has h < 0; it is not written, and the last written"
+                << " time directory holds the last good state" << nl
+                << exit(FatalError);
+        }
+        runTime.setTime(target, index0 + solver->steps());
+        runTime.setDeltaT(solver->lastDt(), false);
+        runTime.writeNow();
+    }
+
+    const double wall = secondsSince(start);
+    if (solver->steps() > 0)
+    {
+        logProgress();
+    }
+    const double updates = nCells*double(solver->steps());
+    Info<< nl << "Time loop: " << solver->steps() << " steps on "
+        << label(nCells) << " cells in " << wall << " s wall ("
+        << solver->name().c_str() << ")" << nl
+        << "Cell updates per second: "
+        << (wall > 0 ? updates/wall : 0.0) << nl << endl;
+}
+
+} // namespace
+
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Savage-Hutter granular avalanche solver (Zhai et al. 2014 scheme)"
+        " on the CPU or the GPU"
+    );
+    argList::addOption
+    (
+        "backend", "auto|cpu|cuda",
+        "where the time loop runs; auto: the GPU when one is present"
+    );
+    argList::addOption
+    (
+        "precision", "double|single",
+        "floating-point precision of the time loop (default double)"
+    );
+    argList::addOption
+    (
+        "logInterval", "seconds",
+        "wall time between progress lines (default 5)"
+    );
+    argList::noParallel();
+
+    #include "setRootCase.H"
+
+    const word backend = args.getOrDefault<word>("backend", "auto");
+    const word precision = args.getOrDefault<word>("precision", "double");
+    const scalar logInterval = args.getOrDefault<scalar>("logInterval", 5);
+    if (!wordList({"auto", "cpu", "cuda"}).found(backend))
+    {
+        FatalErrorInFunction
+            << "Unknown -backend " << backend << nl
+            << "Valid choices: (auto cpu cuda)" << nl << exit(FatalError);
+    }
+    if (!wordList({"double", "single"}).found(precision))
+    {
+        FatalErrorInFunction
+            << "Unknown -precision " << precision << nl
+            << "Valid choices: (double single)" << nl << exit(FatalError);
+    }
+
+    #include "createTime.H"
+    #include "createMesh.H"
+
+    avalancheCase ac(runTime, mesh);
+    ac.restoreStartTime();
+
+    // Restarts continue exactly only from states written to full precision
+    if (IOstream::defaultPrecision() < 17)
+    {
+        IOstream::defaultPrecision(17);
+        Info<< "Writing with 17 significant digits so that restarts"
+            << " continue exactly" << nl << endl;
+    }
+
+    if (precision == "double")
+    {
+        run<double>(ac, backend, logInterval);
+    }
+    else
+    {
+        run<float>(ac, backend, logInterval);
+    }
+
+    Info<< "End\n" << endl;
+    return 0;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,237 @@
+/*---------------------------------------------------------------------------*\
+  savageHutterFoam: Savage-Hutter granular avalanche solver
+\*---------------------------------------------------------------------------*/
+
+#include "structuredMesh.H"
+#include "emptyPolyPatch.H"
+#include "IFstream.H"
+#include "boundBox.H"
+#include "volFields.H"
+
+namespace Foam
+{
+
+const wordList structuredMesh::sideNames({"xMin", "xMax", "yMin", "yMax"});
+
+namespace
+{
+
+// Relative tolerance of "equal" lengths: blockMesh writes points with
+// writePrecision digits, so widths of one uniform block agree to ~1e-6
+const scalar lengthTol = 1e-5;
+
+bool close(const scalar a, const scalar b, const scalar scale)
+{
+    return mag(a - b) <= lengthTol*scale;
+}
+
+} // namespace
+
+
+void structuredMesh::checkBlockMeshDict(const fvMesh& mesh) const
+{
+    const fileName dictFiles[2] =
+    {
+        mesh.time().system()/"blockMeshDict",
+        mesh.time().constant()/"polyMesh"/"blockMeshDict"
+    };
+    for (const fileName& rel : dictFiles)
+    {
+        const fileName file(mesh.time().path()/rel);
+        if (!isFile(file))
+        {
+            continue;
+        }
+        IFstream is(file);
+        const dictionary dict(is);
+        if (!dict.found("blocks"))
+        {
+            return;
+        }
+        ITstream& blocks = dict.lookup("blocks");
+        label nHex = 0;
+        forAll(blocks, i)
+        {
+            if (blocks[i].isWord() && blocks[i].wordToken() == "hex")
+            {
+                ++nHex;
+            }
+        }
+        if (nHex > 1)
+        {
+            FatalIOErrorInFunction(dict)
+                << "blockMeshDict " << file << " has " << nHex
+                << " blocks.  savageHutterFoam needs one hex block with"
+                << " nx ny 1 uniform cells." << nl
+                << exit(FatalIOError);
+        }
+        return;
+    }
+}
+
+
+structuredMesh::structuredMesh(const fvMesh& mesh)
+:
+    nx_(0),
+    ny_(0),
+    dx_(0),
+    dy_(0),
+    xMin_(0),
+    yMin_(0),
+    sidePatches_(4)
+{
+    checkBlockMeshDict(mesh);
+
+    const label nCells = mesh.nCells();
+    if (nCells == 0)
+    {
+        FatalErrorInFunction << "The mesh has no cells" << nl
+            << exit(FatalError);
+    }
+
+    const pointField& pts = mesh.points();
+    const boundBox bb(pts, false);
+    const vector span = bb.span();
+    const labelListList& cellPoints = mesh.cellPoints();
+
+    // Widths of every cell: one uniform hexahedron per (i, j), full depth
+    scalarField wx(nCells), wy(nCells);
+    scalar wxMin = GREAT, wxMax = 0, wyMin = GREAT, wyMax = 0;
+    forAll(cellPoints, c)
+    {
+        const labelList& cp = cellPoints[c];
+        if (cp.size() != 8 || mesh.cells()[c].size() != 6)
+        {
+            FatalErrorInFunction
+                << "Cell " << c << " is not a hexahedron.  savageHutterFoam"
+                << " needs one blockMesh hex block of nx ny 1 cells." << nl
+                << exit(FatalError);
+        }
+        const boundBox cb(pts, cp, false);
+        const vector w = cb.span();
+        if (!close(w.z(), span.z(), span.z()))
+        {
+            FatalErrorInFunction
+                << "3D mesh: cell " << c << " spans " << w.z() << " of the"
+                << " depth " << span.z() << " in z.  savageHutterFoam needs"
+                << " exactly one cell in z (blockMesh: nx ny 1)." << nl
+                << exit(FatalError);
+        }
+        wx[c] = w.x();
+        wy[c] = w.y();
+        wxMin = min(wxMin, w.x());
+        wxMax = max(wxMax, w.x());
+        wyMin = min(wyMin, w.y());
+        wyMax = max(wyMax, w.y());
+    }
+
+    if (!close(wxMin, wxMax, wxMax) || !close(wyMin, wyMax, wyMax))
+    {
+        FatalErrorInFunction
+            << "Graded or non-uniform mesh: cell widths range over"
+            << " [" << wxMin << ", " << wxMax << "] in x and"
+            << " [" << wyMin << ", " << wyMax << "] in y."
+            << "  savageHutterFoam needs uniform spacing"
+            << " (blockMesh: simpleGrading (1 1 1))." << nl
+            << exit(FatalError);
+    }
+
+    nx_ = label(span.x()/wxMax + 0.5);
+    ny_ = label(span.y()/wyMax + 0.5);
+    dx_ = span.x()/nx_;
+    dy_ = span.y()/ny_;
+    xMin_ = bb.min().x();
+    yMin_ = bb.min().y();
+
+    if (nx_*ny_ != nCells)
+    {
+        FatalErrorInFunction
+            << "The mesh is not one rectangular block: " << nCells
+            << " cells in a bounding box of " << nx_ << " x " << ny_
+            << " cells of " << dx_ << " x " << dy_ << " m.  Several blocks"
+            << " or a non-rectangular domain are not supported." << nl
+            << exit(FatalError);
+    }
+
+    // Axis-aligned boxes (no rotation or skew), in one block's cell order
+    const vectorField& C = mesh.C().primitiveField();
+    const scalarField& V = mesh.V().field();
+    const scalar vCell = dx_*dy_*span.z();
+    forAll(C, c)
+    {
+        if (!close(V[c], vCell, vCell))
+        {
+            FatalErrorInFunction
+                << "Cell " << c << " is not an axis-aligned box of "
+                << dx_ << " x " << dy_ << " x " << span.z()
+                << " (volume " << V[c] << " instead of " << vCell << ")."
+                << "  x must be the downslope and y the cross-slope"
+                << " direction of the block." << nl
+                << exit(FatalError);
+        }
+        const label i = label((C[c].x() - xMin_)/dx_);
+        const label j = label((C[c].y() - yMin_)/dy_);
+        if (c != i + nx_*j)
+        {
+            FatalErrorInFunction
+                << "Cell " << c << " at " << C[c] << " is grid cell ("
+                << i << ", " << j << "), not cell " << c << " of a single"
+                << " blockMesh block (i fastest).  Multi-block or renumbered"
+                << " meshes are not supported." << nl
+                << exit(FatalError);
+        }
+    }
+
+    // Boundary faces: front/back in empty patches, the rest on the sides
+    const polyBoundaryMesh& patches = mesh.boundaryMesh();
+    List<DynamicList<label>> onSide(4);
+    forAll(patches, patchi)
+    {
+        const polyPatch& pp = patches[patchi];
+        const bool isEmpty = isA<emptyPolyPatch>(pp);
+        const vectorField nf(pp.faceNormals());
+        bool sides[4] = {false, false, false, false};
+        forAll(nf, facei)
+        {
+            const vector& n = nf[facei];
+            if (mag(n.z()) > 1 - lengthTol)
+            {
+                if (!isEmpty)
+                {
+                    FatalErrorInFunction
+                        << "Patch " << pp.name() << " of type " << pp.type()
+                        << " holds front/back faces; those must be in an"
+                        << " empty patch (2D mesh)." << nl
+                        << exit(FatalError);
+                }
+                continue;
+            }
+            label s = -1;
+            if (n.x() < -1 + lengthTol) { s = 0; }
+            else if (n.x() > 1 - lengthTol) { s = 1; }
+            else if (n.y() < -1 + lengthTol) { s = 2; }
+            else if (n.y() > 1 - lengthTol) { s = 3; }
+            if (s < 0)
+            {
+                FatalErrorInFunction
+                    << "Face " << facei << " of patch " << pp.name()
+                    << " has normal " << n << ", not along x, y or z."
+                    << nl << exit(FatalError);
+            }
+            sides[s] = true;
+        }
+        for (label s = 0; s < 4; ++s)
+        {
+            if (sides[s])
+            {
+                onSide[s].append(patchi);
+            }
+        }
+    }
+    for (label s = 0; s < 4; ++s)
+    {
+        sidePatches_[s].transfer(onSide[s]);
+    }
+}
+
+} // End namespace Foam

@@ -1,0 +1,318 @@
+/*---------------------------------------------------------------------------*\
+  savageHutterFoam: Savage-Hutter granular avalanche solver
+
+Application
+    setAvalancheFields
+
+Description
+    Sets the initial thickness h, velocity U and basal topography zb of a
+    savageHutterFoam case from shapes named in system/setAvalancheFieldsDict,
+    the release shapes and beds of avalanche test cases that setFields
+    cannot express.  Each field is the sum of its shapes evaluated at the
+    cell centres (x, y); fields not listed are left as they are.  Boundary
+    conditions of existing fields are kept; a missing 0/zb is created with
+    zeroGradient patches.
+
+    Shapes (centre, min, max, gradient, origin are (x y) pairs):
+
+        hemisphere { centre (4 0); radius 1.85; }       sqrt(R^2 - r^2)
+        cone       { centre (0 0); radius 0.2; height 0.2; }  H (1 - r/R)
+        paraboloid { centre (0 0); radius 1; height 1; }  H (1 - r^2/R^2)
+        box        { min (-1 -1); max (0 1); value 10; }   value inside
+        damBreak   { position 0; upstream 10; downstream 0; }
+                                        upstream for x < position, else
+                                        downstream
+        plane      { origin (0 0); value 0; gradient (0.1 0); }
+                                        value + gradient . (x - origin)
+        bowl       { centre (0 0); slope 0.5; }         slope r (eq. 34)
+        gaussian   { centre (0 0); amplitude 1; width 0.5; }
+                                        A exp(-r^2/(2 w^2))
+        channel    { axis 0; curvature 0.1; }
+                                        curvature (y - axis)^2 / 2
+
+    U takes box and damBreak shapes with vector values, e.g.
+        box { min (0 -1); max (1 1); value (1 0 0); }
+
+    Example system/setAvalancheFieldsDict:
+
+        h  ( hemisphere { centre (4 0); radius 1.85; } );
+        zb ( bowl { centre (0 0); slope 0.5; } );
+
+Usage
+    setAvalancheFields [-dict file]
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "vector2D.H"
+
+using namespace Foam;
+
+namespace
+{
+
+const wordList scalarShapes
+({
+    "hemisphere", "cone", "paraboloid", "box", "damBreak", "plane", "bowl",
+    "gaussian", "channel"
+});
+
+const wordList vectorShapes({"box", "damBreak"});
+
+vector2D xy(const point& p)
+{
+    return vector2D(p.x(), p.y());
+}
+
+scalar positive(const dictionary& d, const word& key)
+{
+    const scalar v = d.get<scalar>(key);
+    if (!(v > 0))
+    {
+        FatalIOErrorInFunction(d)
+            << key << " must be positive, got " << v << nl
+            << exit(FatalIOError);
+    }
+    return v;
+}
+
+//- Whether p lies in a box or on the upstream side of a dam, and then the
+//  value the shape takes there (for Type = scalar or vector)
+template<class Type>
+bool region(const word& type, const dictionary& d, const point& p, Type& v)
+{
+    if (type == "box")
+    {
+        const vector2D lo = d.get<vector2D>("min");
+        const vector2D hi = d.get<vector2D>("max");
+        v = d.get<Type>("value");
+        return p.x() >= lo.x() && p.x() <= hi.x()
+            && p.y() >= lo.y() && p.y() <= hi.y();
+    }
+    // damBreak
+    const bool up = p.x() < d.get<scalar>("position");
+    v = d.get<Type>(up ? "upstream" : "downstream");
+    return true;
+}
+
+scalar scalarShape(const word& type, const dictionary& d, const point& p)
+{
+    if (type == "box" || type == "damBreak")
+    {
+        scalar v = 0;
+        return region(type, d, p, v) ? v : 0;
+    }
+    if (type == "plane")
+    {
+        const vector2D o = d.getOrDefault<vector2D>("origin", vector2D::zero);
+        const vector2D g = d.get<vector2D>("gradient");
+        return d.getOrDefault<scalar>("value", 0) + (g & (xy(p) - o));
+    }
+    if (type == "channel")
+    {
+        const scalar y = p.y() - d.getOrDefault<scalar>("axis", 0);
+        return 0.5*d.get<scalar>("curvature")*y*y;
+    }
+
+    const vector2D c = d.get<vector2D>("centre");
+    const scalar r = mag(xy(p) - c);
+    if (type == "bowl")
+    {
+        return d.get<scalar>("slope")*r;
+    }
+    if (type == "gaussian")
+    {
+        const scalar w = positive(d, "width");
+        return d.get<scalar>("amplitude")*Foam::exp(-0.5*sqr(r/w));
+    }
+    const scalar R = positive(d, "radius");
+    if (r >= R)
+    {
+        return 0;
+    }
+    if (type == "hemisphere")
+    {
+        return Foam::sqrt(R*R - r*r);
+    }
+    if (type == "cone")
+    {
+        return positive(d, "height")*(1 - r/R);
+    }
+    // paraboloid
+    return positive(d, "height")*(1 - sqr(r/R));
+}
+
+//- The shapes listed under name, each checked against the valid types
+PtrList<entry> shapes
+(
+    const dictionary& dict,
+    const word& name,
+    const wordList& valid
+)
+{
+    PtrList<entry> list(dict.lookup(name));
+    forAll(list, k)
+    {
+        if (!list[k].isDict() || !valid.found(list[k].keyword()))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Unknown shape '" << list[k].keyword() << "' in " << name
+                << "." << nl << "Valid shapes for " << name << ": "
+                << flatOutput(valid) << nl << exit(FatalIOError);
+        }
+    }
+    return list;
+}
+
+void setScalar
+(
+    const dictionary& dict,
+    const word& name,
+    volScalarField& f,
+    const volVectorField::Internal& C
+)
+{
+    const PtrList<entry> list(shapes(dict, name, scalarShapes));
+    f.primitiveFieldRef() = Zero;
+    forAll(list, k)
+    {
+        const word& type = list[k].keyword();
+        const dictionary& d = list[k].dict();
+        Info<< "    " << name << ": " << type << " " << d << endl;
+        forAll(C, c)
+        {
+            f[c] += scalarShape(type, d, C[c]);
+        }
+    }
+    f.correctBoundaryConditions();
+}
+
+void setVector
+(
+    const dictionary& dict,
+    const word& name,
+    volVectorField& f,
+    const volVectorField::Internal& C
+)
+{
+    const PtrList<entry> list(shapes(dict, name, vectorShapes));
+    f.primitiveFieldRef() = Zero;
+    forAll(list, k)
+    {
+        const word& type = list[k].keyword();
+        const dictionary& d = list[k].dict();
+        Info<< "    " << name << ": " << type << " " << d << endl;
+        forAll(C, c)
+        {
+            vector v(Zero);
+            if (region(type, d, C[c], v))
+            {
+                f[c] += v;
+            }
+        }
+    }
+    f.correctBoundaryConditions();
+}
+
+IOobject fieldIO(const fvMesh& mesh, const word& name)
+{
+    return IOobject
+    (
+        name, mesh.time().timeName(), mesh,
+        IOobject::MUST_READ, IOobject::NO_WRITE
+    );
+}
+
+} // namespace
+
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Set h, U and zb of a savageHutterFoam case from the shapes in"
+        " system/setAvalancheFieldsDict"
+    );
+    argList::addOption("dict", "file", "alternative dictionary");
+    argList::noParallel();
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+
+    const fileName dictFile =
+        args.getOrDefault<fileName>
+        (
+            "dict", runTime.system()/"setAvalancheFieldsDict"
+        );
+    Info<< "Reading " << dictFile << nl << endl;
+    const IOdictionary dict
+    (
+        IOobject
+        (
+            dictFile, runTime, IOobject::MUST_READ, IOobject::NO_WRITE
+        )
+    );
+    for (const word& key : dict.toc())
+    {
+        if (!wordList({"h", "U", "zb"}).found(key))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Unknown entry '" << key << "'; valid entries: (h U zb)"
+                << nl << exit(FatalIOError);
+        }
+    }
+
+    const volVectorField::Internal& C = mesh.C();
+
+    if (dict.found("h"))
+    {
+        volScalarField h(fieldIO(mesh, "h"), mesh);
+        setScalar(dict, "h", h, C);
+        forAll(h, c)
+        {
+            if (h[c] < 0)
+            {
+                FatalIOErrorInFunction(dict)
+                    << "The shapes of h give h = " << h[c] << " < 0 in cell "
+                    << c << " at " << C[c] << nl << exit(FatalIOError);
+            }
+        }
+        Info<< "Writing h: volume " << gSum(h.primitiveField()*mesh.V()/
+            (mesh.bounds().span().z())) << " m^3" << nl << endl;
+        h.write();
+    }
+    if (dict.found("U"))
+    {
+        volVectorField U(fieldIO(mesh, "U"), mesh);
+        setVector(dict, "U", U, C);
+        U.write();
+    }
+    if (dict.found("zb"))
+    {
+        IOobject io(fieldIO(mesh, "zb"));
+        autoPtr<volScalarField> zb;
+        if (io.typeHeaderOk<volScalarField>(true))
+        {
+            zb.reset(new volScalarField(io, mesh));
+        }
+        else
+        {
+            io.readOpt() = IOobject::NO_READ;
+            zb.reset
+            (
+                new volScalarField
+                (
+                    io, mesh, dimensionedScalar(dimLength, Zero),
+                    "zeroGradient"
+                )
+            );
+        }
+        setScalar(dict, "zb", zb(), C);
+        Info<< "Writing zb: range [" << gMin(zb().primitiveField()) << ", "
+            << gMax(zb().primitiveField()) << "] m" << nl << endl;
+        zb().write();
+    }
+
+    Info<< "End\n" << endl;
+    return 0;
+}
