@@ -788,6 +788,10 @@ public:
         cells_ = dim3((g.nx + blockX - 1)/blockX, (g.ny + blockY - 1)/blockY);
         faces_ =
             dim3((g.nx + 1 + blockX - 1)/blockX, (g.ny + 1 + blockY - 1)/blockY);
+
+        // Graphs of the first advance() built now, not in its time loop
+        graph(0, cur_);
+        graph(1, cur_);
     }
 
     ~CudaSolver() override

@@ -1,0 +1,379 @@
+/*---------------------------------------------------------------------------*\
+  savageHutterFoam: Savage-Hutter granular avalanche solver
+
+Description
+    Performance of the backends on the inclined plane of section 5.3
+    (tests/gpuCases.H), in double and float:
+      - the meshes of Table IV, k x k x (30 x 14), k = 4, 8, 16, 32, from
+        t = 0 to t = 24, against the paper's GPU times (Table IV, 1D) and
+        specific times (Table V);
+      - a large mesh (k = 144: 4320 x 2016 = 8.7M cells) over a shorter
+        time, and the same mesh covered by a flowing layer everywhere
+        ("wet"), so that no cell takes the cheap dry path.
+    Backends: CPU serial, CPU on all cores (OpenMP), CUDA.
+
+    Cell updates per second = cells x steps / wall time of the time loop
+    (Solver::advance; set-up and copies of the state excluded).  A CPU run
+    that would take longer than its wall budget stops there (advance()'s
+    budget); its s/cell/step is then taken over the steps it made, and its
+    time for the whole run is that times cells x the GPU's step count
+    (marked '~'; the early, mostly dry steps are cheaper, so this
+    underestimates the CPU time).
+
+    Usage: shBenchmark [options]
+      -meshes 4,8,16,32     Table IV meshes (0 for none)
+      -large K              large mesh K x K x (30 x 14), 0 for none
+      -largeTime T          end time of the large runs (default 1)
+      -precision both|double|float
+      -cpuWall S            wall budget of one CPU run on a Table IV mesh
+      -cpuWallLarge S       the same on the large meshes
+      -noCpu                GPU only
+      -profile K            a few steps of the wet case on mesh K, for ncu
+      -out FILE             also write the table (markdown) to FILE
+\*---------------------------------------------------------------------------*/
+
+#include "cpu/cpuSolver.H"
+#include "cuda/cudaSolver.H"
+#include "gpuCases.H"
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace sh;
+
+namespace
+{
+
+struct Options
+{
+    std::vector<int> meshes{4, 8, 16, 32};
+    int large = 144;
+    double largeTime = 1;
+    bool dbl = true;
+    bool flt = true;
+    double cpuWall = 15;
+    double cpuWallLarge = 5;
+    bool cpu = true;
+    int profile = 0;
+    std::string out;
+};
+
+//- Table IV (GPU time, 1D allocation, ms) and Table V (1D, s/cell/step)
+struct PaperRow
+{
+    int k;
+    double gpuMs;
+    double specific;
+};
+const PaperRow paper[] = {
+    {4, 538.4, 1.1e-7}, {8, 2452, 6.8e-8}, {16, 16169.1, 5.7e-8},
+    {32, 122621.7, 5.2e-8}
+};
+
+const PaperRow* paperRow(int k)
+{
+    for (const PaperRow& r : paper)
+    {
+        if (r.k == k) { return &r; }
+    }
+    return nullptr;
+}
+
+struct Result
+{
+    std::string precision;
+    std::string mesh;
+    long cells = 0;
+    std::string backend;
+    long steps = 0;
+    double tEnd = 0;
+    double tReached = 0;
+    double wall = 0;        //!< measured
+    bool partial = false;
+    double fullWall = 0;    //!< whole run (extrapolated if partial)
+    double rate = 0;        //!< cell updates / s
+    double serialWall = 0;  //!< CPU serial, whole run
+    bool serialPartial = false;
+    const PaperRow* paper = nullptr;
+};
+
+std::vector<Result> results;
+
+template<class Real>
+sh::Problem<Real> wetPlane(int k)
+{
+    sh::Problem<Real> pb = shcases::inclinedPlane<Real>(k);
+    // A layer of thickness 0.5 everywhere, the cap on top: every cell wet
+    pb.setState([](double x, double y)
+    {
+        const double r0 = 1.85;
+        const double r2 = (x - 4)*(x - 4) + y*y;
+        return sh::Primitive
+        {
+            0.5 + (r2 < r0*r0 ? std::sqrt(r0*r0 - r2) : 0.0), 0, 0
+        };
+    });
+    return pb;
+}
+
+template<class Real>
+Result timeRun
+(
+    Solver<Real>& s,
+    double tEnd,
+    double wallBudget,
+    long cells
+)
+{
+    using clock = std::chrono::steady_clock;
+    const clock::time_point t0 = clock::now();
+    const bool reached = s.advance(tEnd, wallBudget);
+    const std::chrono::duration<double> dt = clock::now() - t0;
+    Result r;
+    r.cells = cells;
+    r.backend = s.name();
+    r.steps = s.steps();
+    r.tEnd = tEnd;
+    r.tReached = s.time();
+    r.wall = dt.count();
+    r.partial = !reached;
+    r.fullWall = r.wall;
+    r.rate = double(cells)*r.steps/r.wall;
+    return r;
+}
+
+std::string meshName(int k, int nx, int ny, bool wet)
+{
+    std::ostringstream os;
+    os << k << "x" << k << "x(30x14) = " << nx << "x" << ny;
+    if (wet) { os << " wet"; }
+    return os.str();
+}
+
+template<class Real>
+void runMesh(const Options& o, int k, bool large, bool wet)
+{
+    const char* prec = sizeof(Real) == 8 ? "double" : "float";
+    const sh::Problem<Real> pb =
+        wet ? wetPlane<Real>(k) : shcases::inclinedPlane<Real>(k);
+    const long cells = long(pb.grid.nx)*pb.grid.ny;
+    const double tEnd = large ? o.largeTime : 24;
+    const std::string mesh = meshName(k, pb.grid.nx, pb.grid.ny, wet);
+    std::fprintf(stderr, "== %s %s, t = 0..%g\n", prec, mesh.c_str(), tEnd);
+
+    std::vector<Result> rows;
+    long gpuSteps = 0;
+    std::string why;
+    if (cudaAvailable(&why))
+    {
+        std::unique_ptr<Solver<Real>> gpu = makeCudaSolver(pb);
+        gpu->stableDt();    // context and module loaded before timing
+        rows.push_back(timeRun(*gpu, tEnd, 1e300, cells));
+        gpuSteps = rows.back().steps;
+    }
+    else
+    {
+        std::fprintf(stderr, "   no GPU: %s\n", why.c_str());
+    }
+    if (o.cpu)
+    {
+        const double budget = large ? o.cpuWallLarge : o.cpuWall;
+        for (const bool parallel : {false, true})
+        {
+            CpuSolver<Real> cpu(pb, parallel);
+            Result r = timeRun(cpu, tEnd, budget, cells);
+            if (r.partial && gpuSteps > 0)
+            {
+                r.fullWall = r.wall/r.steps*gpuSteps;
+            }
+            rows.push_back(r);
+        }
+    }
+    double serial = 0;
+    bool serialPartial = false;
+    for (const Result& r : rows)
+    {
+        if (r.backend == "cpu (serial)")
+        {
+            serial = r.fullWall;
+            serialPartial = r.partial;
+        }
+    }
+    for (Result& r : rows)
+    {
+        r.precision = prec;
+        r.mesh = mesh;
+        r.serialWall = serial;
+        r.serialPartial = serialPartial;
+        r.paper = large ? nullptr : paperRow(k);
+        std::fprintf(stderr, "   %-45s %8ld steps, t = %-8.4g %9.4f s%s\n",
+            r.backend.c_str(), r.steps, r.tReached, r.wall,
+            r.partial ? " (partial)" : "");
+        results.push_back(r);
+    }
+}
+
+std::string table()
+{
+    std::ostringstream os;
+    char buf[512];
+    os << "| precision | mesh | cells | backend | steps | t | wall [s] "
+          "| cell updates/s | s/cell/step | vs CPU serial | vs paper GPU "
+          "(Table IV/V) |\n";
+    os << "|---|---|---:|---|---:|---:|---:|---:|---:|---:|---:|\n";
+    for (const Result& r : results)
+    {
+        std::string tCol = r.partial
+            ? (std::snprintf(buf, sizeof buf, "%.3g of %g", r.tReached, r.tEnd), buf)
+            : (std::snprintf(buf, sizeof buf, "%g", r.tEnd), buf);
+        std::string wall = r.partial
+            ? (std::snprintf(buf, sizeof buf, "%.3f (~%.4g whole)", r.wall, r.fullWall), buf)
+            : (std::snprintf(buf, sizeof buf, "%.4g", r.wall), buf);
+        std::string vsSerial = "-";
+        if (r.serialWall > 0)
+        {
+            std::snprintf(buf, sizeof buf, "%s%.3g",
+                r.partial || r.serialPartial ? "~" : "",
+                r.serialWall/r.fullWall);
+            vsSerial = buf;
+        }
+        std::string vsPaper = "-";
+        if (r.paper)
+        {
+            // Table IV time for the whole run; Table V per cell per step
+            std::snprintf(buf, sizeof buf, "%s%.3g x (time), %.3g x (s/cell/step)",
+                r.partial ? "~" : "", r.paper->gpuMs*1e-3/r.fullWall,
+                r.paper->specific*r.rate);
+            vsPaper = buf;
+        }
+        else
+        {
+            // Against the paper's best specific time, 5.2e-8 s/cell/step
+            std::snprintf(buf, sizeof buf, "%.3g x (s/cell/step vs 5.2e-8)",
+                5.2e-8*r.rate);
+            vsPaper = buf;
+        }
+        std::snprintf(buf, sizeof buf,
+            "| %s | %s | %ld | %s | %ld | %s | %s | %.3e | %.3e | %s | %s |\n",
+            r.precision.c_str(), r.mesh.c_str(), r.cells, r.backend.c_str(),
+            r.steps, tCol.c_str(), wall.c_str(), r.rate, 1.0/r.rate,
+            vsSerial.c_str(), vsPaper.c_str());
+        os << buf;
+    }
+    return os.str();
+}
+
+std::vector<int> parseList(const char* s)
+{
+    std::vector<int> v;
+    std::stringstream ss(s);
+    std::string item;
+    while (std::getline(ss, item, ','))
+    {
+        const int k = std::atoi(item.c_str());
+        if (k > 0) { v.push_back(k); }
+    }
+    return v;
+}
+
+template<class Real>
+int profile(int k)
+{
+    const sh::Problem<Real> pb = wetPlane<Real>(k);
+    std::unique_ptr<Solver<Real>> gpu = makeCudaSolver(pb);
+    const Real dt = gpu->stableDt();
+    for (int n = 0; n < 3; ++n)
+    {
+        gpu->step(dt);
+    }
+    std::printf("profiled 3 steps of %s on %dx%d\n", gpu->name().c_str(),
+        pb.grid.nx, pb.grid.ny);
+    return 0;
+}
+
+} // namespace
+
+
+int main(int argc, char** argv)
+{
+    Options o;
+    for (int a = 1; a < argc; ++a)
+    {
+        const std::string arg = argv[a];
+        const char* next = a + 1 < argc ? argv[a + 1] : nullptr;
+        auto need = [&]()
+        {
+            if (!next)
+            {
+                std::fprintf(stderr, "%s needs a value\n", arg.c_str());
+                std::exit(2);
+            }
+            ++a;
+            return next;
+        };
+        if (arg == "-meshes") { o.meshes = parseList(need()); }
+        else if (arg == "-large") { o.large = std::atoi(need()); }
+        else if (arg == "-largeTime") { o.largeTime = std::atof(need()); }
+        else if (arg == "-cpuWall") { o.cpuWall = std::atof(need()); }
+        else if (arg == "-cpuWallLarge") { o.cpuWallLarge = std::atof(need()); }
+        else if (arg == "-noCpu") { o.cpu = false; }
+        else if (arg == "-profile") { o.profile = std::atoi(need()); }
+        else if (arg == "-out") { o.out = need(); }
+        else if (arg == "-precision")
+        {
+            const std::string p = need();
+            if (p != "both" && p != "double" && p != "float")
+            {
+                std::fprintf(stderr, "-precision: both, double or float, not %s\n", p.c_str());
+                return 2;
+            }
+            o.dbl = p != "float";
+            o.flt = p != "double";
+        }
+        else
+        {
+            std::fprintf(stderr, "unknown option %s (see the header of "
+                "benchmarks/shBenchmark.C)\n", arg.c_str());
+            return 2;
+        }
+    }
+
+    if (o.profile > 0)
+    {
+        return o.dbl ? profile<double>(o.profile) : profile<float>(o.profile);
+    }
+
+    for (const bool dbl : {true, false})
+    {
+        if ((dbl && !o.dbl) || (!dbl && !o.flt)) { continue; }
+        for (const int k : o.meshes)
+        {
+            dbl ? runMesh<double>(o, k, false, false)
+                : runMesh<float>(o, k, false, false);
+        }
+        if (o.large > 0)
+        {
+            for (const bool wet : {false, true})
+            {
+                dbl ? runMesh<double>(o, o.large, true, wet)
+                    : runMesh<float>(o, o.large, true, wet);
+            }
+        }
+    }
+
+    const std::string t = table();
+    std::printf("\n%s", t.c_str());
+    if (!o.out.empty())
+    {
+        std::ofstream f(o.out);
+        f << t;
+    }
+    return 0;
+}
