@@ -28,7 +28,8 @@ Description
       -cpuWall S            wall budget of one CPU run on a Table IV mesh
       -cpuWallLarge S       the same on the large meshes
       -noCpu                GPU only
-      -profile K            a few steps of the wet case on mesh K, for ncu
+      -profile K            three steps on mesh K, for ncu (no timing)
+      -profileCase wet|dry  the case -profile runs (default wet)
       -out FILE             also write the table (markdown) to FILE
 \*---------------------------------------------------------------------------*/
 
@@ -62,6 +63,7 @@ struct Options
     double cpuWallLarge = 5;
     bool cpu = true;
     int profile = 0;
+    bool profileWet = true;
     std::string out;
 };
 
@@ -284,9 +286,10 @@ std::vector<int> parseList(const char* s)
 }
 
 template<class Real>
-int profile(int k)
+int profile(int k, bool wet)
 {
-    const sh::Problem<Real> pb = wetPlane<Real>(k);
+    const sh::Problem<Real> pb =
+        wet ? wetPlane<Real>(k) : shcases::inclinedPlane<Real>(k);
     std::unique_ptr<Solver<Real>> gpu = makeCudaSolver(pb);
     const Real dt = gpu->stableDt();
     for (int n = 0; n < 3; ++n)
@@ -326,6 +329,10 @@ int main(int argc, char** argv)
         else if (arg == "-noCpu") { o.cpu = false; }
         else if (arg == "-profile") { o.profile = std::atoi(need()); }
         else if (arg == "-out") { o.out = need(); }
+        else if (arg == "-profileCase")
+        {
+            o.profileWet = std::string(need()) != "dry";
+        }
         else if (arg == "-precision")
         {
             const std::string p = need();
@@ -347,7 +354,9 @@ int main(int argc, char** argv)
 
     if (o.profile > 0)
     {
-        return o.dbl ? profile<double>(o.profile) : profile<float>(o.profile);
+        return o.dbl
+            ? profile<double>(o.profile, o.profileWet)
+            : profile<float>(o.profile, o.profileWet);
     }
 
     for (const bool dbl : {true, false})

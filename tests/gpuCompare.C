@@ -120,7 +120,7 @@ void compareRun
 
     std::printf("%8s %8s %8s %10s %12s %12s %10s %8s\n", "t", "steps cpu",
         "gpu", "differing", "max|diff|", "relL2(h)", "max|hu|", "launches");
-    bool allSame = true, clocksSame = true, nonTrivial = true;
+    bool allSame = true, clocksSame = true, moved = false;
     long chunks = 0;
     std::vector<Real> a[3], b[3];
     for (const double t : times)
@@ -147,9 +147,10 @@ void compareRun
         allSame = allSame && d.differing == 0 && d.maxAbs == 0;
         clocksSame = clocksSame && cpu.steps() == gpu->steps()
             && cpu.time() == gpu->time() && cpu.lastDt() == gpu->lastDt();
-        nonTrivial = nonTrivial && d.maxHu > 0 && cpu.steps() > fixedSteps;
+        moved = moved || d.maxHu > 0;
     }
-    test.check(nonTrivial, std::string(prec) + ": the flow moves (non-zero momentum, steps taken)");
+    test.check(moved && cpu.steps() > fixedSteps,
+        std::string(prec) + ": the flow moves (non-zero momentum at an output time)");
     test.check(allSame, std::string(prec) + ": h, hu, hv bit-identical at every output time");
     test.check(clocksSame, std::string(prec) + ": steps, time and last dt identical");
     if (wallChunks)
