@@ -1,7 +1,7 @@
 """Read the results of a savageHutterFoam case for the tutorials' plots.
 
-Fields are OpenFOAM ASCII files (savageHutterFoam writes ASCII unless the
-case asks for binary).  The mesh is one structured block, cell k being
+Fields are OpenFOAM files in ASCII or binary format (the case's
+writeFormat), uncompressed.  The mesh is one structured block, cell k being
 (i, j) = (k mod nx, k div nx); cell centres come from the C field that
 `postProcess -func writeCellCentres -time 0` writes.
 """
@@ -12,18 +12,22 @@ import re
 import numpy as np
 
 
-def _internal_field(text, n_comp):
-    m = re.search(r"internalField\s+uniform\s+([^;]+);", text)
+def _internal_field(data, n_comp):
+    """(values, None) for a nonuniform field, (None, text) for a uniform
+    one; data are the file's bytes, ASCII or binary format"""
+    m = re.search(rb"internalField\s+uniform\s+([^;]+);", data)
     if m:
-        return None, m.group(1)
-    m = re.search(r"internalField\s+nonuniform\s+List<\w+>\s*(\d+)\s*\(", text)
+        return None, m.group(1).decode()
+    m = re.search(rb"internalField\s+nonuniform\s+List<\w+>\s*(\d+)\s*\(", data)
     if not m:
         raise ValueError("no internalField found")
     n = int(m.group(1))
-    body = text[m.end():]
-    end = body.index("\n)")
-    body = body[:end].replace("(", " ").replace(")", " ")
-    values = np.array(body.split(), dtype=float)
+    if re.search(rb"format\s+binary\s*;", data[:2000]):
+        values = np.frombuffer(data, dtype="<f8", count=n * n_comp, offset=m.end())
+    else:
+        body = data[m.end():]
+        body = body[:body.index(b"\n)")].replace(b"(", b" ").replace(b")", b" ")
+        values = np.array(body.split(), dtype=float)
     if values.size != n * n_comp:
         raise ValueError("expected %d values, found %d" % (n * n_comp, values.size))
     return values.reshape(n, n_comp) if n_comp > 1 else values, None
@@ -33,10 +37,10 @@ def read_field(case, time, name, n_cells=None):
     """The internal field `name` at time directory `time` as a numpy array
     (n,) for scalars or (n, 3) for vectors."""
     path = os.path.join(case, time, name)
-    with open(path) as f:
-        text = f.read()
-    n_comp = 3 if "volVectorField" in text else 1
-    values, uniform = _internal_field(text, n_comp)
+    with open(path, "rb") as f:
+        data = f.read()
+    n_comp = 3 if b"volVectorField" in data[:2000] else 1
+    values, uniform = _internal_field(data, n_comp)
     if values is not None:
         return values
     if n_cells is None:

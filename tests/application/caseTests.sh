@@ -1,0 +1,311 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# savageHutterFoam: Savage-Hutter granular avalanche solver
+#
+# Description
+#     Tests of the OpenFOAM application on small copies of the damBreak
+#     tutorial (64 x 8 cells):
+#       - every bad input of the list below exits non-zero, prints a message
+#         naming the problem (and the valid choices where there are some),
+#         and writes no time directory;
+#       - legal edge cases run (delta = 0);
+#       - a restart from latestTime continues exactly (files identical);
+#       - foamToVTK reads the output and finds h, U and hU.
+#     Prints one line per check and "N passed, M failed".
+#
+# Usage
+#     caseTests.sh <project dir> <work dir>
+#------------------------------------------------------------------------------
+set -u
+project="$1"
+work="$2"
+. "$project/bin/tools/RunFunctions"
+
+passed=0
+failed=0
+pass() { echo "PASS  $*"; passed=$((passed + 1)); }
+fail() { echo "FAIL  $*"; failed=$((failed + 1)); }
+
+rm -rf "$work"
+mkdir -p "$work"
+base="$work/base"
+mkdir "$base"
+cp -r "$project"/tutorials/damBreak/{0.orig,constant,system} "$base"/
+(
+    cd "$base" || exit 1
+    setBlockCells 64 8
+    setEntry system/controlDict endTime 0.1
+    setEntry system/controlDict writeInterval 0.05
+    runApplication blockMesh
+    restore0Dir
+    runApplication setAvalancheFields
+) > "$work/base.log" 2>&1 || { cat "$work/base.log"; echo "0 passed, 1 failed"; exit 1; }
+
+newCase()
+{
+    rm -rf "$work/$1"
+    cp -r "$base" "$work/$1"
+    rm -f "$work/$1"/log.*
+    echo "$work/$1"
+}
+
+timeDirs()
+{
+    (cd "$1" && ls -d [0-9]* 2>/dev/null | grep -v '^0$' | grep -v orig)
+}
+
+#- expectFailure <name> <pattern>... : run savageHutterFoam in case <name>
+#  (prepared by the caller), which must fail, print every pattern, and
+#  write no time directory
+expectFailure()
+{
+    local name="$1"
+    shift
+    local dir="$work/$name"
+    local log="$dir/log.savageHutterFoam"
+    (cd "$dir" && savageHutterFoam $SH_ARGS > "$log" 2>&1)
+    local rc=$?
+    local problems=""
+    [ $rc -ne 0 ] || problems="$problems exit status 0;"
+    grep -q "FOAM FATAL" "$log" || problems="$problems no FOAM FATAL message;"
+    local p
+    for p in "$@"
+    do
+        grep -qF -- "$p" "$log" || problems="$problems message lacks '$p';"
+    done
+    local written
+    written="$(timeDirs "$dir")"
+    [ -z "$written" ] || problems="$problems wrote time directories $written;"
+    if [ -z "$problems" ]
+    then
+        pass "$name: rejected ($(grep -m1 -A1 -E 'FOAM FATAL' "$log" | tail -n1 | cut -c1-90))"
+    else
+        fail "$name:$problems (see $log)"
+    fi
+}
+
+SH_ARGS="-backend cpu"
+
+# -- Model parameters (constant/transportProperties) ---------------------------
+tp=constant/transportProperties
+
+d=$(newCase deltaAbovePhi)
+setEntry "$d/$tp" earthPressure activePassive
+setEntry "$d/$tp" phi 20
+expectFailure deltaAbovePhi "delta" "complex" "transportProperties"
+
+for v in 0 90 -5 100
+do
+    d=$(newCase phi$v)
+    setEntry "$d/$tp" phi "$v"
+    expectFailure "phi$v" "phi" "(0, 90)"
+done
+
+for v in -1 90
+do
+    d=$(newCase delta$v)
+    setEntry "$d/$tp" CoulombCoeffs/delta "$v"
+    expectFailure "delta$v" "delta" "[0, 90)"
+done
+
+d=$(newCase missingFrictionModel)
+foamDictionary "$d/$tp" -entry frictionModel -remove > /dev/null
+expectFailure missingFrictionModel "frictionModel" "Valid choices" "Coulomb"
+
+d=$(newCase unknownFrictionModel)
+setEntry "$d/$tp" frictionModel Voellmyy
+expectFailure unknownFrictionModel "Voellmyy" "Valid choices" "Coulomb"
+
+d=$(newCase missingEarthPressure)
+foamDictionary "$d/$tp" -entry earthPressure -remove > /dev/null
+expectFailure missingEarthPressure "earthPressure" "activePassive" "isotropic"
+
+d=$(newCase unknownEarthPressure)
+setEntry "$d/$tp" earthPressure rankine
+expectFailure unknownEarthPressure "rankine" "activePassive" "isotropic"
+
+d=$(newCase missingInclination)
+foamDictionary "$d/$tp" -entry inclination -remove > /dev/null
+expectFailure missingInclination "inclination"
+
+d=$(newCase steepInclination)
+setEntry "$d/$tp" inclination "constant 95"
+expectFailure steepInclination "inclination"
+
+d=$(newCase negativeGravity)
+setEntry "$d/$tp" g -9.81
+expectFailure negativeGravity "gravity must be positive"
+
+# -- Numerics (system/fvSolution, system/controlDict) --------------------------
+fs=system/fvSolution
+
+d=$(newCase missingLimiter)
+foamDictionary "$d/$fs" -entry savageHutter/limiter -remove > /dev/null
+expectFailure missingLimiter "limiter" "minmod" "vanLeer" "MC"
+
+d=$(newCase unknownLimiter)
+setEntry "$d/$fs" savageHutter/limiter superbee
+expectFailure unknownLimiter "superbee" "minmod" "vanLeer" "MC"
+
+d=$(newCase misspeltKeyword)
+setEntry "$d/$fs" savageHutter/stopingCriterion off
+expectFailure misspeltKeyword "stopingCriterion" "stoppingCriterion"
+
+d=$(newCase negativeHDry)
+setEntry "$d/$fs" savageHutter/hDry -1
+expectFailure negativeHDry "hDry"
+
+d=$(newCase maxCoAboveOne)
+setEntry "$d/system/controlDict" maxCo 1.5
+expectFailure maxCoAboveOne "maxCo" "(0, 1]"
+
+d=$(newCase writeControlTimeStep)
+setEntry "$d/system/controlDict" writeControl timeStep
+setEntry "$d/system/controlDict" writeInterval 10
+expectFailure writeControlTimeStep "writeControl" "adjustableRunTime"
+
+# -- Initial fields ------------------------------------------------------------
+d=$(newCase negativeH)
+python3 - "$d/0/h" <<'PY'
+import re, sys
+p = sys.argv[1]
+s = open(p).read()
+s = re.sub(r"\n10\n", "\n-0.5\n", s, count=1)
+open(p, "w").write(s)
+PY
+expectFailure negativeH "h = -0.5" ">= 0"
+
+d=$(newCase nanH)
+python3 - "$d/0/h" <<'PY'
+import re, sys
+p = sys.argv[1]
+s = open(p).read()
+# one NaN among the values of the nonuniform list
+s = re.sub(r"\n10\n", "\nnan\n", s, count=1)
+open(p, "w").write(s)
+PY
+expectFailure nanH "h"
+
+# -- Meshes --------------------------------------------------------------------
+d=$(newCase gradedMesh)
+sed -i 's/simpleGrading (1 1 1)/simpleGrading (3 1 1)/' "$d/system/blockMeshDict"
+(cd "$d" && blockMesh > log.blockMesh 2>&1)
+expectFailure gradedMesh "Graded"
+
+d=$(newCase threeD)
+sed -i 's/(\$nx \$ny 1)/($nx $ny 2)/' "$d/system/blockMeshDict"
+(cd "$d" && blockMesh > log.blockMesh 2>&1)
+expectFailure threeD "3D mesh" "one cell in z"
+
+d=$(newCase twoBlocks)
+cat > "$d/system/blockMeshDict" <<'DICT'
+FoamFile { version 2.0; format ascii; class dictionary; object blockMeshDict; }
+vertices
+(
+    (-12.8 -1.6 0) (0 -1.6 0) (0 1.6 0) (-12.8 1.6 0)
+    (-12.8 -1.6 1) (0 -1.6 1) (0 1.6 1) (-12.8 1.6 1)
+    (12.8 -1.6 0) (12.8 1.6 0) (12.8 -1.6 1) (12.8 1.6 1)
+);
+blocks
+(
+    hex (0 1 2 3 4 5 6 7) (32 8 1) simpleGrading (1 1 1)
+    hex (1 8 9 2 5 10 11 6) (32 8 1) simpleGrading (1 1 1)
+);
+boundary
+(
+    upslope   { type patch; faces ((0 4 7 3)); }
+    downslope { type patch; faces ((8 9 11 10)); }
+    sides     { type wall;  faces ((0 1 5 4) (3 7 6 2) (1 8 10 5) (2 6 11 9)); }
+    frontAndBack { type empty; faces ((0 3 2 1) (4 5 6 7) (1 2 9 8) (5 10 11 6)); }
+);
+DICT
+(cd "$d" && blockMesh > log.blockMesh 2>&1 && restore0Dir)
+expectFailure twoBlocks "2 blocks"
+
+# -- Boundary conditions -------------------------------------------------------
+d=$(newCase inletOutlet)
+foamDictionary "$d/0/U" -entry boundaryField/downslope -set \
+    "{ type inletOutlet; inletValue uniform (0 0 0); value uniform (0 0 0); }" \
+    > /dev/null
+expectFailure inletOutlet "unsupported boundary condition" "zeroGradient" \
+    "slip" "fixedValue"
+
+d=$(newCase noSlipWall)
+foamDictionary "$d/0/U" -entry boundaryField/sides/type -set noSlip > /dev/null
+expectFailure noSlipWall "unsupported boundary condition" "noSlip"
+
+# -- Options -------------------------------------------------------------------
+d=$(newCase unknownBackend)
+SH_ARGS="-backend opencl" expectFailure unknownBackend "opencl" "auto cpu cuda"
+
+d=$(newCase unknownPrecision)
+SH_ARGS="-precision half" expectFailure unknownPrecision "half" "double single"
+
+# -- Legal input: a frictionless bed (delta = 0) runs ---------------------------
+d=$(newCase frictionless)
+setEntry "$d/$tp" CoulombCoeffs/delta 0
+setEntry "$d/$tp" earthPressure activePassive
+if (cd "$d" && savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1) \
+&& grep -q "^End" "$d/log.savageHutterFoam" && [ -f "$d/0.1/h" ]
+then
+    pass "frictionless: delta = 0 with activePassive runs to t = 0.1"
+else
+    fail "frictionless: delta = 0 did not run (see $d/log.savageHutterFoam)"
+fi
+
+# -- Restart continuity ----------------------------------------------------------
+full=$(newCase restartFull)
+part=$(newCase restartPart)
+setEntry "$full/system/controlDict" endTime 0.3
+setEntry "$part/system/controlDict" endTime 0.15
+(cd "$full" && savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1)
+(cd "$part" && savageHutterFoam -backend cpu > log.1 2>&1)
+setEntry "$part/system/controlDict" endTime 0.3
+setEntry "$part/system/controlDict" startFrom latestTime
+(cd "$part" && savageHutterFoam -backend cpu > log.2 2>&1)
+same=true
+for t in 0.15 0.2 0.25 0.3
+do
+    for f in h U hU regime
+    do
+        if ! cmp -s "$full/$t/$f" "$part/$t/$f"
+        then
+            same=false
+            echo "      $t/$f differs"
+        fi
+    done
+done
+if $same && grep -q "Starting time loop" "$part/log.2" \
+&& grep -q "^Time = 0.3 " "$part/log.2" \
+&& ! grep -q "^Time = 0.1 " "$part/log.2"
+then
+    pass "restart: 0 -> 0.15, then latestTime -> 0.3, files identical to 0 -> 0.3"
+else
+    fail "restart does not continue exactly (see $part)"
+fi
+
+# -- foamToVTK reads the output --------------------------------------------------
+if (cd "$full" && foamToVTK > log.foamToVTK 2>&1)
+then
+    vtu="$(ls "$full"/VTK/*/internal.vtu 2>/dev/null | sort -t_ -k2 -n | tail -n1)"
+    names="$(grep -ao "Name='[a-zA-Z]*'" "$vtu" 2>/dev/null | sort -u | tr '\n' ' ')"
+    missing=""
+    for f in h U hU zb regime
+    do
+        case "$names" in *"Name='$f'"*) ;; *) missing="$missing $f" ;; esac
+    done
+    if [ -n "$vtu" ] && [ -z "$missing" ] \
+    && grep -aq "NumberOfCells='512'" "$vtu" \
+    && [ "$(ls "$full"/VTK/*.vtm | wc -l)" -eq 7 ]
+    then
+        pass "foamToVTK: 7 times, h U hU zb regime on 512 cells in ${vtu#$full/}"
+    else
+        fail "foamToVTK output lacks$missing or 512 cells or 7 times (see $full/VTK)"
+    fi
+else
+    fail "foamToVTK failed (see $full/log.foamToVTK)"
+fi
+
+echo
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
