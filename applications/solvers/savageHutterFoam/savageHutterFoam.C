@@ -253,12 +253,17 @@ struct avalancheCase
     }
 
     //- Next write time after t on the grid of writeInterval, anchored at 0
-    //  when the start time lies on it (as after a restart), else at start
+    //  when the start time lies on it (as after a restart), else at start.
+    //  Rounded to 12 significant digits, so that 3 x 0.1 is the 0.3 a user
+    //  writes as endTime and a restart reads from the directory name: runs
+    //  that stop at the same time then take the same last step.
     scalar nextWriteTime(const scalar t, const scalar anchor) const
     {
         const scalar w = input.writeInterval;
         const scalar k = std::floor((t - anchor)/w + 1e-6) + 1;
-        return anchor + k*w;
+        char buf[32];
+        snprintf(buf, sizeof(buf), "%.12g", anchor + k*w);
+        return std::strtod(buf, nullptr);
     }
 };
 
