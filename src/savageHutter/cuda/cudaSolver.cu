@@ -51,7 +51,6 @@ Description
 
 #include <algorithm>
 #include <cfloat>
-#include <cstdlib>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -167,26 +166,6 @@ struct StepControl
 };
 
 
-//- Programmatic dependent launch (sm_90): a kernel lets the next one in
-//  the stream be scheduled early (launchDependents) and waits for the
-//  previous one's results (waitPrevious) before reading any.  Saves most
-//  of the launch gap between the five dependent kernels of a step, which
-//  is what a small mesh's time step is made of.  Without the launch
-//  attribute (SH_CUDA_PDL=0) both are no-ops.
-__device__ inline void waitPrevious()
-{
-#if defined(__CUDA_ARCH__) && __CUDA_ARCH__ >= 900
-    asm volatile("griddepcontrol.wait;" ::: "memory");
-#endif
-}
-
-__device__ inline void launchDependents()
-{
-#if defined(__CUDA_ARCH__) && __CUDA_ARCH__ >= 900
-    asm volatile("griddepcontrol.launch_dependents;" :::);
-#endif
-}
-
 constexpr int blockX = 32;
 constexpr int blockY = 4;
 
@@ -227,6 +206,64 @@ __device__ void blockMax(B v, B* target)
             atomicMax(target, v);
         }
     }
+}
+
+//- Empty tiles.  The grid of cells is cut into tiles of blockX x blockY
+//  cells, one block of the cell kernels each.  A tile is occupied when a
+//  cell of it has a non-zero bit in h, hu or hv.  In a step from state
+//  buffer b to b^1, what the kernels write for a tile (U^{n+1/2}, its face
+//  fluxes, theta, U^{n+1} and the ghost cells they mirror) depends on U^n
+//  within 6 cells (predictor 1, MUSCL + HLLC 2, theta 1, the corrector's
+//  neighbours' theta 1, partial-wet cells 1).  Where U^n is empty there,
+//  every stage gives exactly its empty value: U^{n+1/2} = U^{n+1} = +0
+//  (h = max(0, +0) and momenta set to 0), fluxes +0 (emptyFace), theta = 1.
+//  If also U^{n-1}, the state in buffer b^1 that the step overwrites and
+//  the input of the step that wrote the arrays, is empty there, all the
+//  arrays already hold those values: the tile is skipped.  The bounds are
+//  within 6 cells, i.e. the tiles within 1 in x and 2 in y.
+constexpr int skipTilesX = 1;
+constexpr int skipTilesY = 2;
+
+//- Whether a state has a non-zero bit (-0 counts as occupied)
+template<class Real>
+__host__ __device__ bool occupied(Real h, Real hu, Real hv)
+{
+    return (Bits<Real>::of(h) | Bits<Real>::of(hu) | Bits<Real>::of(hv)) != 0;
+}
+
+//- Whether this block's tile is skipped this step (every thread of the
+//  block calls it; one store of the decision for the other kernels)
+__device__ bool decideSkip
+(
+    const int* occNow,
+    const int* occBefore,
+    int* skip,
+    bool skipping
+)
+{
+    const int nTx = gridDim.x;
+    const int nTy = gridDim.y;
+    const int tid = threadIdx.x + threadIdx.y*blockDim.x;
+    const int w = 2*skipTilesX + 1;
+    const int nb = w*(2*skipTilesY + 1);
+    int busy = 0;
+    if (tid < 2*nb)
+    {
+        const int k = tid % nb;
+        const int tx = int(blockIdx.x) + k % w - skipTilesX;
+        const int ty = int(blockIdx.y) + k / w - skipTilesY;
+        if (tx >= 0 && tx < nTx && ty >= 0 && ty < nTy)
+        {
+            const int t = tx + ty*nTx;
+            busy = tid < nb ? occNow[t] : occBefore[t];
+        }
+    }
+    const bool skipped = skipping && !__syncthreads_or(busy);
+    if (threadIdx.x == 0 && threadIdx.y == 0)
+    {
+        skip[blockIdx.x + blockIdx.y*nTx] = skipped;
+    }
+    return skipped;
 }
 
 //- Ghost cells that mirror interior cell (i, j), filled from its final
@@ -279,11 +316,13 @@ __global__ void predictorKernel
     Fields<Real> Uh,
     StepControl<Real>* ctrl,
     int parity,
-    Real fixedDt
+    Real fixedDt,
+    const int* occNow,
+    const int* occBefore,
+    int* skip,
+    bool skipping
 )
 {
-    launchDependents();
-    waitPrevious();
     Real dt;
     if (fixedDt > Real(0))
     {
@@ -331,6 +370,10 @@ __global__ void predictorKernel
         }
     }
 
+    if (decideSkip(occNow, occBefore, skip, skipping))
+    {
+        return;
+    }
     const int i = blockIdx.x*blockDim.x + threadIdx.x;
     const int j = blockIdx.y*blockDim.y + threadIdx.y;
     if (i < m.g.nx && j < m.g.ny)
@@ -387,11 +430,11 @@ __global__ void fluxKernel
     Fields<Real> Uh,
     FaceFields<Real> Fx,
     FaceFields<Real> Fy,
-    const StepControl<Real>* ctrl
+    const StepControl<Real>* ctrl,
+    const int* skip,
+    int nTx
 )
 {
-    launchDependents();
-    waitPrevious();
     if (!ctrl->active)
     {
         return;
@@ -399,6 +442,11 @@ __global__ void fluxKernel
     const int i = int(blockIdx.x*blockDim.x + threadIdx.x) - 1;
     const int j = int(blockIdx.y*blockDim.y + threadIdx.y) - 1;
     if (i >= m.g.nx || j >= m.g.ny)
+    {
+        return;
+    }
+    // The tile of the face's low cell (the boundary tile for i or j = -1)
+    if (skip[(i < 0 ? 0 : i)/blockX + (j < 0 ? 0 : j)/blockY*nTx])
     {
         return;
     }
@@ -445,12 +493,11 @@ __global__ void drainKernel
     FaceFields<Real> Fx,
     FaceFields<Real> Fy,
     Real* theta,
-    const StepControl<Real>* ctrl
+    const StepControl<Real>* ctrl,
+    const int* skip
 )
 {
-    launchDependents();
-    waitPrevious();
-    if (!ctrl->active)
+    if (!ctrl->active || skip[blockIdx.x + blockIdx.y*gridDim.x])
     {
         return;
     }
@@ -475,12 +522,11 @@ __global__ void correctorKernel
     FaceFields<Real> Fy,
     const Real* theta,
     Fields<Real> Unew,
-    const StepControl<Real>* ctrl
+    const StepControl<Real>* ctrl,
+    const int* skip
 )
 {
-    launchDependents();
-    waitPrevious();
-    if (!ctrl->active)
+    if (!ctrl->active || skip[blockIdx.x + blockIdx.y*gridDim.x])
     {
         return;
     }
@@ -505,26 +551,47 @@ __global__ void finishKernel
     StepControl<Real>* ctrl,
     int parity,
     int newBuf,
-    bool deviceClock
+    bool deviceClock,
+    const int* skip,
+    int* occNew
 )
 {
-    launchDependents();
-    waitPrevious();
     using B = typename Bits<Real>::type;
     if (!ctrl->active)
     {
         return;
     }
+    const int tile = blockIdx.x + blockIdx.y*gridDim.x;
     const int i = blockIdx.x*blockDim.x + threadIdx.x;
     const int j = blockIdx.y*blockDim.y + threadIdx.y;
     B rate = 0;
-    if (i < m.g.nx && j < m.g.ny)
+    int busy = 0;
+    const bool skipped = skip[tile];
+    if (!skipped && i < m.g.nx && j < m.g.ny)
     {
         partialWetCell(m, Unew, i, j);
         mirrorGhosts(m, Unew, i, j);
+        const int c = m.g.idx(i, j);
+        busy = occupied(Unew.h[c], Unew.hu[c], Unew.hv[c]);
         rate = Bits<Real>::of(cellWaveRate(m, Unew, i, j));
     }
-    blockMax(rate, &ctrl->rate[parity ^ 1]);
+    // A skipped tile stays empty; the condition is uniform over the block
+    if (skipped)
+    {
+        if (threadIdx.x == 0 && threadIdx.y == 0)
+        {
+            occNew[tile] = 0;
+        }
+    }
+    else
+    {
+        busy = __syncthreads_or(busy);
+        if (threadIdx.x == 0 && threadIdx.y == 0)
+        {
+            occNew[tile] = busy;
+        }
+        blockMax(rate, &ctrl->rate[parity ^ 1]);
+    }
 
     if (firstThread())
     {
@@ -632,8 +699,13 @@ class CudaSolver : public Solver<Real>
     DeviceArray<Real> theta_;
     DeviceArray<Control> ctrl_;
 
+    //- Occupied tiles of the state in each buffer, skipped tiles of the
+    //  step in progress
+    DeviceArray<int> occ_[2];
+    DeviceArray<int> skip_;
+    bool skipping_ = true;
+
     int cur_ = 0;               //!< state buffer holding U^n
-    bool pdl_ = true;           //!< programmatic dependent launch
     B inflowBits_;
 
     //- Instantiated graphs [size][start buffer]
@@ -654,8 +726,7 @@ class CudaSolver : public Solver<Real>
         return {f[0].get(), f[1].get(), f[2].get(), f[3].get(), f[4].get()};
     }
 
-    //- Launch a kernel of a step on the stream, with the programmatic
-    //  dependency on the previous kernel unless disabled
+    //- Launch a kernel of a step on the stream
     template<class... Params, class... Args>
     void launch
     (
@@ -665,16 +736,13 @@ class CudaSolver : public Solver<Real>
         Args... args
     )
     {
-        cudaLaunchAttribute attr[1];
-        attr[0].id = cudaLaunchAttributeProgrammaticStreamSerialization;
-        attr[0].val.programmaticStreamSerializationAllowed = 1;
         cudaLaunchConfig_t cfg = {};
         cfg.gridDim = grid;
         cfg.blockDim = block_;
         cfg.dynamicSmemBytes = 0;
         cfg.stream = stream_;
-        cfg.attrs = attr;
-        cfg.numAttrs = pdl_ ? 1 : 0;
+        cfg.attrs = nullptr;
+        cfg.numAttrs = 0;
         cudaCheck(cudaLaunchKernelEx(&cfg, kernel, args...), name, __FILE__, __LINE__);
     }
 
@@ -691,17 +759,25 @@ class CudaSolver : public Solver<Real>
         const int newBuf = from ^ 1;
         const bool deviceClock = fixedDt <= Real(0);
 
+        const int* occNow = occ_[from].get();
+        const int* occBefore = occ_[from ^ 1].get();
+        int* skip = skip_.get();
+        const int* skipped = skip;
+        const Control* cc = c;
+
         launch("predictorKernel", predictorKernel<Real>, cells_,
-            model_, U, Uh, c, parity, fixedDt);
+            model_, U, Uh, c, parity, fixedDt, occNow, occBefore, skip,
+            skipping_);
         launch("fluxKernel", fluxKernel<Real>, faces_,
-            model_, Uh, Fx, Fy, static_cast<const Control*>(c));
+            model_, Uh, Fx, Fy, cc, skipped, int(cells_.x));
         launch("drainKernel", drainKernel<Real>, cells_,
-            model_, U, Fx, Fy, theta, static_cast<const Control*>(c));
+            model_, U, Fx, Fy, theta, cc, skipped);
         launch("correctorKernel", correctorKernel<Real>, cells_,
-            model_, U, Uh, Fx, Fy, static_cast<const Real*>(theta), Un,
-            static_cast<const Control*>(c));
+            model_, U, Uh, Fx, Fy, static_cast<const Real*>(theta), Un, cc,
+            skipped);
         launch("finishKernel", finishKernel<Real>, cells_,
-            model_, Un, c, parity, newBuf, deviceClock);
+            model_, Un, c, parity, newBuf, deviceClock, skipped,
+            occ_[newBuf].get());
     }
 
     cudaGraphExec_t graph(int size, int start)
@@ -793,9 +869,6 @@ public:
         cudaDeviceProp prop;
         SH_CUDA_CHECK(cudaGetDeviceProperties(&prop, dev));
         deviceName_ = prop.name;
-        // SH_CUDA_PDL=0: plain launches, for measuring what PDL gains
-        const char* pdl = std::getenv("SH_CUDA_PDL");
-        pdl_ = prop.major >= 9 && !(pdl && std::string(pdl) == "0");
         SH_CUDA_CHECK(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking));
 
         hostModel_.p = pb.params;
@@ -897,6 +970,33 @@ public:
         (
             (g.nx + 1 + blockX - 1)/blockX, (g.ny + 1 + blockY - 1)/blockY, 2
         );
+
+        // Occupied tiles of the initial state, for both buffers.  Inflow
+        // sides impose states that need not be empty: no skipping then.
+        const int nTiles = int(cells_.x*cells_.y);
+        std::vector<int> occ(nTiles, 0);
+        for (int j = 0; j < g.ny; ++j)
+        {
+            for (int i = 0; i < g.nx; ++i)
+            {
+                const int c = g.idx(i, j);
+                if (occupied(q[0][c], q[1][c], q[2][c]))
+                {
+                    occ[i/blockX + (j/blockY)*cells_.x] = 1;
+                }
+            }
+        }
+        for (int b = 0; b < 2; ++b)
+        {
+            occ_[b].allocate(nTiles);
+            occ_[b].upload(occ);
+        }
+        skip_.allocate(nTiles);
+        skip_.upload(std::vector<int>(nTiles, 0));
+        for (int s = 0; s < 4; ++s)
+        {
+            skipping_ = skipping_ && pb.bc.type[s] != BCType::inflow;
+        }
 
         // Graphs of the first advance() built now, not in its time loop
         graph(0, cur_);
