@@ -159,10 +159,9 @@ d=$(newCase maxCoAboveOne)
 setEntry "$d/system/controlDict" maxCo 1.5
 expectFailure maxCoAboveOne "maxCo" "(0, 1]"
 
-d=$(newCase writeControlTimeStep)
-setEntry "$d/system/controlDict" writeControl timeStep
-setEntry "$d/system/controlDict" writeInterval 10
-expectFailure writeControlTimeStep "writeControl" "adjustableRunTime"
+d=$(newCase writeControlBogus)
+setEntry "$d/system/controlDict" writeControl everyStep
+expectFailure writeControlBogus "writeControl" "adjustableRunTime" "timeStep"
 
 # -- Initial fields ------------------------------------------------------------
 d=$(newCase negativeH)
@@ -251,6 +250,25 @@ then
     pass "frictionless: delta = 0 with activePassive runs to t = 0.1"
 else
     fail "frictionless: delta = 0 did not run (see $d/log.savageHutterFoam)"
+fi
+
+# -- writeControl timeStep: a time directory every 10 steps and at the end --
+d=$(newCase writeControlTimeStep)
+setEntry "$d/system/controlDict" writeControl timeStep
+setEntry "$d/system/controlDict" writeInterval 10
+if (cd "$d" && savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1)
+then
+    steps=$(sed -n 's/^Time loop: \([0-9]*\) steps.*/\1/p' "$d/log.savageHutterFoam")
+    nDirs=$(timeDirs "$d" | wc -l)
+    expected=$(( (steps + 9) / 10 ))
+    if [ -n "$steps" ] && [ "$nDirs" -eq "$expected" ] && [ -f "$d/0.1/h" ]
+    then
+        pass "writeControl timeStep: $steps steps, $nDirs time directories, the last at endTime 0.1"
+    else
+        fail "writeControl timeStep: $steps steps gave $nDirs time directories, expected $expected ending at 0.1"
+    fi
+else
+    fail "writeControl timeStep: the run failed (see $d/log.savageHutterFoam)"
 fi
 
 # -- Restart continuity ----------------------------------------------------------

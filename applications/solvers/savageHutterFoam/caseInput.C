@@ -165,22 +165,28 @@ caseInput::caseInput(const fvMesh& mesh)
             << exit(FatalIOError);
     }
 
-    const word writeControl = cd.get<word>("writeControl");
-    const wordList validWrite({"adjustableRunTime", "runTime"});
+    writeControl = cd.get<word>("writeControl");
+    const wordList validWrite
+    ({
+        "adjustableRunTime", "runTime", "timeStep", "clockTime", "cpuTime"
+    });
     if (!validWrite.found(writeControl))
     {
         FatalIOErrorInFunction(cd)
-            << "writeControl " << writeControl << " is not supported:"
-            << " savageHutterFoam chooses its own time steps and hits"
-            << " write times exactly." << nl
+            << "Unknown writeControl " << writeControl << nl
             << "Valid choices: " << flatOutput(validWrite) << nl
             << exit(FatalIOError);
     }
     writeInterval = cd.get<scalar>("writeInterval");
-    if (!(writeInterval > 0))
+    if
+    (
+        !(writeInterval > 0)
+     || (writeControl == "timeStep" && writeInterval < 1)
+    )
     {
         FatalIOErrorInFunction(cd)
-            << "writeInterval must be positive, got " << writeInterval << nl
+            << "writeInterval must be positive (at least 1 with writeControl"
+            << " timeStep), got " << writeInterval << nl
             << exit(FatalIOError);
     }
 

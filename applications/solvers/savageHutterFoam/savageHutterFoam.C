@@ -357,37 +357,90 @@ void run(avalancheCase& ac, const word& backend, const scalar logInterval)
     };
 
     std::vector<Real> hs, hus, hvs;
-    while (solver->time() < endTime)
+    auto write = [&]()
     {
-        const scalar target =
-            min(ac.nextWriteTime(solver->time(), anchor), endTime);
-
-        while (true)
-        {
-            const double budget = logInterval - secondsSince(lastLog);
-            if (solver->advance(target, max(budget, 0.0)))
-            {
-                break;
-            }
-            logProgress();
-        }
-        if (secondsSince(lastLog) >= logInterval)
-        {
-            logProgress();
-        }
-
         solver->getState(hs, hus, hvs);
         if (!ac.store(hs, hus, hvs))
         {
             FatalErrorInFunction
-                << "The solution at t = " << target << " is not finite or"
-                << " has h < 0; it is not written, and the last written"
-                << " time directory holds the last good state" << nl
+                << "The solution at t = " << solver->time() << " is not"
+                << " finite or has h < 0; it is not written, and the last"
+                << " written time directory holds the last good state" << nl
                 << exit(FatalError);
         }
-        runTime.setTime(target, index0 + solver->steps());
+        runTime.setTime(solver->time(), index0 + solver->steps());
         runTime.setDeltaT(solver->lastDt(), false);
         runTime.writeNow();
+    };
+    auto logIfDue = [&]()
+    {
+        if (secondsSince(lastLog) >= logInterval)
+        {
+            logProgress();
+        }
+    };
+
+    const word& writeControl = ac.input.writeControl;
+    if (writeControl == "timeStep")
+    {
+        // Steps driven one by one from here, with the arithmetic of
+        // Solver::advance (the GPU then synchronises every step)
+        const label every = label(w + 0.5);
+        while (solver->time() < endTime)
+        {
+            for (label n = 0; n < every && solver->time() < endTime; ++n)
+            {
+                double dt = double(solver->stableDt());
+                dt = min(dt, ac.input.maxDeltaT);
+                const double left = endTime - solver->time();
+                const bool last = dt >= left;
+                solver->step(Real(last ? left : dt));
+                if (last)
+                {
+                    solver->setTime(endTime);
+                }
+                logIfDue();
+            }
+            write();
+        }
+    }
+    else if (writeControl == "clockTime" || writeControl == "cpuTime")
+    {
+        // Every writeInterval seconds of wall time, wherever the run is
+        wallClock::time_point lastWrite = wallClock::now();
+        while (solver->time() < endTime)
+        {
+            const double toLog = logInterval - secondsSince(lastLog);
+            const double toWrite = w - secondsSince(lastWrite);
+            const bool reached =
+                solver->advance(endTime, max(min(toLog, toWrite), 0.0));
+            logIfDue();
+            if (reached || secondsSince(lastWrite) >= w)
+            {
+                write();
+                lastWrite = wallClock::now();
+            }
+        }
+    }
+    else
+    {
+        // adjustableRunTime, runTime: every write time hit exactly
+        while (solver->time() < endTime)
+        {
+            const scalar target =
+                min(ac.nextWriteTime(solver->time(), anchor), endTime);
+            while (true)
+            {
+                const double budget = logInterval - secondsSince(lastLog);
+                if (solver->advance(target, max(budget, 0.0)))
+                {
+                    break;
+                }
+                logProgress();
+            }
+            logIfDue();
+            write();
+        }
     }
 
     const double wall = secondsSince(start);
