@@ -1,7 +1,7 @@
 /*---------------------------------------------------------------------------*\
   GPU against CPU: the CUDA backend must reproduce the CPU backend
 
-    Usage: gpuCompare damBreak|collapsingPile|inclinedPlane
+    Usage: gpuCompare damBreak|collapsingPile|inclinedPlane|inflowPlane
 
     Runs the case on the CPU backend (OpenMP) and on the CUDA backend, in
     double and in float, and compares the states at several output times.
@@ -224,6 +224,14 @@ int main(int argc, char** argv)
         return run([](auto r) { return shcases::inclinedPlane<decltype(r)>(4); },
             {6, 12, 24}, false, 0);
     }
-    std::fprintf(stderr, "usage: gpuCompare damBreak|collapsingPile|inclinedPlane\n");
+    if (which == "inflowPlane")
+    {
+        std::printf("Inclined plane fed by inflow at x = 0, walls at y = -+7, "
+            "mesh 2x2x(30x14), t = 12\n");
+        return run([](auto r) { return shcases::inflowPlane<decltype(r)>(2); },
+            {3, 6, 12}, false, 2);
+    }
+    std::fprintf(stderr, "usage: gpuCompare "
+        "damBreak|collapsingPile|inclinedPlane|inflowPlane\n");
     return 2;
 }
