@@ -17,9 +17,9 @@ namespace
 {
 
 const char* const notBuilt =
-    "this build of savageHutter has no CUDA backend (nvcc was not found "
-    "when it was configured; reconfigure with nvcc on the PATH or in "
-    "/usr/local/cuda)";
+    "this build of savageHutter has no CUDA backend (it was configured "
+    "with SH_CUDA=OFF or without nvcc; reconfigure with nvcc on the PATH "
+    "or in /usr/local/cuda)";
 
 } // namespace
 
