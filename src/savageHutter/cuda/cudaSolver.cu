@@ -10,7 +10,8 @@ Description
     dependency on neighbouring cells that another block writes:
       1. predictor      eq. (14) -> U^{n+1/2}, and its ghost cells; reads
                         the step's dt off the device (below)
-      2. face fluxes    MUSCL + HLLC of every face, stored once per face
+      2. face fluxes    MUSCL + HLLC of every face, one thread per face,
+                        stored once per face
       3. drain factor   theta of each cell from its four faces' mass flux
       4. corrector      eq. (17) with sources, (26) and (27) -> U^{n+1}
       5. finish         partial-wet cells (29), ghost cells of U^{n+1}, the
@@ -22,8 +23,16 @@ Description
 
     Fluxes are stored, not recomputed per cell: theta of a cell needs all
     four of its faces, and the corrector needs theta of its neighbours, so
-    recomputing would cost four flux evaluations per face instead of one
-    (docs/performance.md has the figures).
+    recomputing would cost four flux evaluations per face instead of one,
+    and the flux is already most of the work (docs/performance.md has the
+    profiler's figures).
+
+    Empty regions: a tile of cells whose neighbourhood holds no material
+    now and held none in the state the step overwrites is skipped by every
+    kernel (the arrays already hold what the stages would write), and a
+    face with no material on its stencil gets its exact zero flux without
+    the HLLC solver (decideSkip, emptyFace).  An avalanche covers a few
+    per cent of its domain for much of its run.
 
     Time step on the device: kernel 5 of step n leaves max(rate) of U^{n+1}
     in one of two slots (by step parity); kernel 1 of step n+1 turns it into
@@ -39,9 +48,10 @@ Description
     same order as the CPU backend, divisions and square roots are IEEE
     correctly rounded on both sides, and this file is compiled with
     --fmad=false (CMakeLists.txt) because the host compiler (x86-64, no
-    -mfma) contracts no a*b + c either.  Reductions are maxima, which do not
-    depend on order.  So the GPU state is bit-identical to the CPU state in
-    double and in float (tests/gpuCompare.C checks it).
+    -mfma) contracts no a*b + c either (measured on an H100: no loss of
+    speed).  Reductions are maxima, which do not depend on order.  So the
+    GPU state is bit-identical to the CPU state in double and in float
+    (tests/gpuCompare.C checks it).
 \*---------------------------------------------------------------------------*/
 
 #include "cudaSolver.H"
