@@ -22,6 +22,7 @@ work="$2"
 cd "$project" || exit 1
 rm -rf "$work"
 mkdir -p "$work"
+work="$(cd "$work" && pwd)"
 tar -xJf external/bundle.tar.xz -C "$work" || exit 1
 export PATH="$work/bundle/bin:$PATH"
 export LD_LIBRARY_PATH="$work/bundle/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
