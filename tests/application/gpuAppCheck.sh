@@ -78,14 +78,18 @@ compare()
     done
     local cpu="$work/$name/cpu-$precision" gpu="$work/$name/cuda-$precision"
     local times
-    times="$(cd "$cpu" && ls -d [0-9]* | grep -v '^0$' | sort -g)"
+    times="$(cd "$cpu" && ls -d [0-9]* | grep -E '^[0-9.e+-]+$' | grep -v '^0$' | sort -g)"
     local nFiles=0 nDiff=0 t f
     for t in $times
     do
         for f in h U hU regime
         do
             nFiles=$((nFiles + 1))
-            cmp -s "$cpu/$t/$f" "$gpu/$t/$f" || nDiff=$((nDiff + 1))
+            if [ ! -f "$cpu/$t/$f" ] || ! cmp -s "$cpu/$t/$f" "$gpu/$t/$f"
+            then
+                nDiff=$((nDiff + 1))
+                echo "      differs or missing: $t/$f"
+            fi
         done
     done
     if [ "$nDiff" -eq 0 ] && [ "$nFiles" -gt 0 ]
