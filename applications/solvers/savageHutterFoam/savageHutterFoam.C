@@ -508,7 +508,11 @@ int main(int argc, char *argv[])
     ac.restoreStartTime();
 
     // Restarts continue exactly only from states written to full precision
-    if (IOstream::defaultPrecision() < 17)
+    if
+    (
+        runTime.writeFormat() == IOstream::ASCII
+     && IOstream::defaultPrecision() < 17
+    )
     {
         IOstream::defaultPrecision(17);
         Info<< "Writing with 17 significant digits so that restarts"
