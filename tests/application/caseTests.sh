@@ -252,6 +252,30 @@ else
     fail "frictionless: delta = 0 did not run (see $d/log.savageHutterFoam)"
 fi
 
+# -- Inflow: a supercritical stream enters a dry bed through fixedValue ------
+d=$(newCase inflow)
+cp "$d/0.orig/h" "$d/0/h"
+foamDictionary "$d/0/h" -entry boundaryField/upslope -set \
+    "{ type fixedValue; value uniform 1; }" > /dev/null
+foamDictionary "$d/0/U" -entry boundaryField/upslope -set \
+    "{ type fixedValue; value uniform (5 0 0); }" > /dev/null
+if (cd "$d" && savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1) \
+&& grep -q "xMin: patch upslope, inflow h 1 U (5 0 0)" "$d/log.savageHutterFoam"
+then
+    # h u W t = 1 x 5 x 3.2 x 0.1 m^3 (the stream is supercritical: nothing
+    # goes back out, and the front is still inside the domain)
+    vol=$(grep "^Time = 0.1 " "$d/log.savageHutterFoam" | tail -n1 \
+        | sed 's/.*volume = \([^ ]*\).*/\1/')
+    if python3 -c "import sys; sys.exit(abs(float('$vol') - 1.6) > 1e-7)"
+    then
+        pass "inflow: fixedValue h 1, U (5 0 0): volume at t = 0.1 is $vol = h u W t = 1.6"
+    else
+        fail "inflow: volume at t = 0.1 is $vol, not h u W t = 1.6"
+    fi
+else
+    fail "inflow: the run failed or the inflow was not recognised (see $d/log.savageHutterFoam)"
+fi
+
 # -- writeControl timeStep: a time directory every 10 steps and at the end --
 d=$(newCase writeControlTimeStep)
 setEntry "$d/system/controlDict" writeControl timeStep
