@@ -10,7 +10,10 @@ Description
       - a large mesh (k = 144: 4320 x 2016 = 8.7M cells) over a shorter
         time, and the same mesh covered by a flowing layer everywhere
         ("wet"), so that no cell takes the cheap dry path.
-    Backends: CPU serial, CPU on all cores (OpenMP), CUDA.
+    Backends: CPU serial, CPU on all cores (OpenMP), CUDA.  After the table,
+    the GPU's float rate over its double rate, mesh by mesh (the float
+    CUDA backend uses approximate division and square root unless built
+    with SH_CUDA_FLOAT_IEEE=ON; its name says which).
 
     Cell updates per second = cells x steps / wall time of the time loop
     (Solver::advance; set-up and copies of the state excluded).  A CPU run
@@ -268,6 +271,36 @@ std::string table()
             r.steps, tCol.c_str(), wall.c_str(), r.rate, 1.0/r.rate,
             vsSerial.c_str(), vsPaper.c_str());
         os << buf;
+    }
+
+    // The GPU in float against double, mesh by mesh (rates, since the two
+    // precisions may take a few steps more or less)
+    std::ostringstream ratios;
+    for (const Result& f : results)
+    {
+        if (f.precision != "float" || f.backend.compare(0, 4, "cuda") != 0)
+        {
+            continue;
+        }
+        for (const Result& d : results)
+        {
+            if (d.precision == "double" && d.mesh == f.mesh
+             && d.backend.compare(0, 4, "cuda") == 0)
+            {
+                std::snprintf(buf, sizeof buf,
+                    "| %s | %ld / %ld | %.3e | %.3e | %.2f |\n",
+                    f.mesh.c_str(), d.steps, f.steps, d.rate, f.rate,
+                    f.rate/d.rate);
+                ratios << buf;
+            }
+        }
+    }
+    if (!ratios.str().empty())
+    {
+        os << "\nGPU, float against double:\n\n"
+              "| mesh | steps double / float | cell updates/s double "
+              "| float | float / double |\n"
+              "|---|---:|---:|---:|---:|\n" << ratios.str();
     }
     return os.str();
 }

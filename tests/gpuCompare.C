@@ -6,17 +6,42 @@
     Runs the case on the CPU backend (OpenMP) and on the CUDA backend, in
     double and in float, and compares the states at several output times.
 
-    Tolerance, both precisions: none.  The two backends call the same
-    functions (physics/scheme.H) on the same inputs in the same order, with
+    Double: no tolerance.  The two backends call the same functions
+    (physics/scheme.H) on the same inputs in the same order, with
     IEEE-rounded +, -, *, /, sqrt and no contraction into FMA on either
-    side (cuda/cudaSolver.cu), and the only reductions are maxima; so every
-    value of h, hu, hv must be bit-identical, and so must the number of
-    steps, the time and the last time step.  The test prints the number of
-    differing values, max |difference| and the relative L2 norm of the
-    difference of h, ||h_gpu - h_cpu||_2 / ||h_cpu||_2, which are all zero
-    when it passes.  For information it also prints the distance of the
-    float result from the double one (a property of the scheme in float, not
-    of the backend).
+    side (cuda/cudaSolverImpl.H), and the only reductions are maxima; so
+    every value of h, hu, hv must be bit-identical, and so must the number
+    of steps, the time, the last time step and the diagnostics.
+
+    Float: the CUDA backend is compiled with the hardware's approximate
+    division and square root (cuda/cudaSolverFloat.cu; a build configured
+    with SH_CUDA_FLOAT_IEEE=ON makes it IEEE and the float comparison is
+    then bit for bit, as in double).  Approximate, its state differs from
+    the CPU's float state by round-off, and the test bounds that difference
+    by the one that float round-off itself makes, measured in the same run:
+      e_gpu = relL2(float GPU - float CPU),
+      e_fd  = relL2(float CPU - double CPU),
+    where relL2(a - b) = ||a - b||_2 / ||b||_2 over the interior cells, for
+    h and for the momentum (hu, hv) as one vector (hv alone is antisymmetric
+    and nearly zero in the symmetric cases, so its own relative norm says
+    little), must satisfy at every output time
+      e_gpu <= 8 e_fd + 1e-6.
+    Why 8: an approximate division errs by up to 2 ulp and an approximate
+    square root by about 1, against 0.5 ulp for IEEE rounding, so
+    perturbations up to 4 times larger are fed into the same dynamics that
+    amplify float round-off (e_fd); 8 leaves a factor 2 on that.  Why
+    1e-6 (17 ulp of float, relative, in the rms): e_fd is below one ulp
+    early in the smooth dam break, where 8 e_fd alone would ask the GPU for
+    less than its division's own error.  Where the reference momentum is
+    zero (the pile at rest), the GPU's must be exactly zero too.  The
+    inclined plane's active/passive switch of the earth pressure makes both
+    distances grow fast (e_fd ~ 1e-3 from t = 1), so there the bound says
+    that the GPU in float is as close to the CPU as float allows, not that
+    either is close to double.  Further float checks: the step count within
+    1 % (+1) of the CPU's (dt depends on the rounded wave speeds), output
+    times hit exactly, stableDt within 1e-6 relative (a few ulp), the volume
+    within the bound of h, wet and moving cells printed.  The test also
+    prints relL2(float GPU - double CPU) for information.
 
     The paths through the device clock are all exercised: Solver::step with
     a host-given dt, advanceTo over one and many graph launches, advance()
@@ -31,7 +56,9 @@
 #include "gpuCases.H"
 #include "cuda/cudaSolver.H"
 
-#include <cstring>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
 #include <memory>
 
 using namespace sh;
@@ -40,91 +67,133 @@ using namespace shtest;
 namespace
 {
 
-struct Difference
+//- Float bound: e_gpu <= floatFactor e_fd + floatFloor (header)
+constexpr double floatFactor = 8;
+constexpr double floatFloor = 1e-6;
+
+//- A state on the host, as doubles
+struct State
 {
-    long differing = 0;     //!< values whose bits differ
-    double maxAbs = 0;      //!< max |gpu - cpu| over h, hu, hv
-    double relL2h = 0;      //!< ||h_gpu - h_cpu|| / ||h_cpu||
-    double maxHu = 0;       //!< max |hu| + |hv| of the reference (non-trivial)
+    std::vector<double> q[3];
 };
 
-template<class A, class B>
-Difference difference
-(
-    const std::vector<A> (&gpu)[3],
-    const std::vector<B> (&ref)[3]
-)
+template<class Real>
+State state(Solver<Real>& s)
 {
-    Difference d;
-    double e2 = 0, r2 = 0;
+    std::vector<Real> q[3];
+    s.getState(q[0], q[1], q[2]);
+    State r;
     for (int k = 0; k < 3; ++k)
     {
-        for (std::size_t c = 0; c < ref[k].size(); ++c)
+        r.q[k].assign(q[k].begin(), q[k].end());
+    }
+    return r;
+}
+
+struct Difference
+{
+    long differing = 0;     //!< values that differ (bit patterns of Real)
+    double maxAbs = 0;      //!< max |a - b| over h, hu, hv
+    double relL2h = 0;      //!< ||h_a - h_b|| / ||h_b||
+    double relL2m = 0;      //!< ||m_a - m_b|| / ||m_b||, m = (hu, hv);
+                            //   0 if both zero, inf if only m_b is
+    double maxHu = 0;       //!< max |hu|, |hv| of b (non-trivial)
+};
+
+//- a against the reference b; values compared as doubles (exact for float)
+Difference difference(const State& a, const State& b)
+{
+    Difference d;
+    double eh = 0, rh = 0, em = 0, rm = 0;
+    for (int k = 0; k < 3; ++k)
+    {
+        for (std::size_t c = 0; c < b.q[k].size(); ++c)
         {
-            const double a = double(gpu[k][c]);
-            const double b = double(ref[k][c]);
-            if (sizeof(A) == sizeof(B))
+            const double x = a.q[k][c];
+            const double y = b.q[k][c];
+            d.differing += x != y;
+            d.maxAbs = std::max(d.maxAbs, std::fabs(x - y));
+            (k == 0 ? eh : em) += (x - y)*(x - y);
+            (k == 0 ? rh : rm) += y*y;
+            if (k > 0)
             {
-                d.differing += std::memcmp(&gpu[k][c], &ref[k][c], sizeof(A)) != 0;
-            }
-            d.maxAbs = std::max(d.maxAbs, std::fabs(a - b));
-            if (k == 0)
-            {
-                e2 += (a - b)*(a - b);
-                r2 += b*b;
-            }
-            else
-            {
-                d.maxHu = std::max(d.maxHu, std::fabs(b));
+                d.maxHu = std::max(d.maxHu, std::fabs(y));
             }
         }
     }
-    d.relL2h = r2 > 0 ? std::sqrt(e2/r2) : 0;
+    const double inf = std::numeric_limits<double>::infinity();
+    d.relL2h = rh > 0 ? std::sqrt(eh/rh) : (eh > 0 ? inf : 0);
+    d.relL2m = rm > 0 ? std::sqrt(em/rm) : (em > 0 ? inf : 0);
     return d;
 }
 
+//- Run cpu and gpu through the output times and compare at each.  Double
+//  (or float on an IEEE build): bit for bit.  Approximate float: against
+//  the bound of the header, with cpuDouble the double CPU states at the
+//  output times.  Returns the CPU states at the output times and leaves the
+//  GPU's final state in gpuFinal.
 template<class Real>
-void state(Solver<Real>& s, std::vector<Real> (&q)[3])
-{
-    s.getState(q[0], q[1], q[2]);
-}
-
-//- Run cpu and gpu through the output times and compare at each; returns
-//  the GPU's final state
-template<class Real>
-void compareRun
+std::vector<State> compareRun
 (
     Counter& test,
     const Problem<Real>& pb,
     const std::vector<double>& times,
     bool wallChunks,
     int fixedSteps,
-    std::vector<Real> (&gpuFinal)[3]
+    const std::vector<State>* cpuDouble,
+    State& gpuFinal
 )
 {
-    const char* prec = sizeof(Real) == 8 ? "double" : "float";
+    const bool dbl = sizeof(Real) == 8;
+    const std::string prec = dbl ? "double" : "float";
+    const bool exact = dbl || !cudaFloatApproximate();
     CpuSolver<Real> cpu(pb, true);
     std::unique_ptr<Solver<Real>> gpu = makeCudaSolver(pb);
-    std::printf("\n%s: %s against %s, %dx%d cells\n", prec,
+    std::printf("\n%s: %s against %s, %dx%d cells\n", prec.c_str(),
         gpu->name().c_str(), cpu.name().c_str(), pb.grid.nx, pb.grid.ny);
+    if (exact)
+    {
+        std::printf("must be bit-identical\n");
+    }
+    else
+    {
+        std::printf("bound: e_gpu <= %g e_fd + %g; e_gpu = relL2(GPU - CPU), "
+            "e_fd = relL2(CPU float - CPU double), of h and of (hu, hv)\n",
+            floatFactor, floatFloor);
+    }
 
     const Real dtCpu = cpu.stableDt();
     const Real dtGpu = gpu->stableDt();
-    test.check(dtCpu == dtGpu, std::string(prec) + fmt(": stableDt identical (%.17g", double(dtCpu))
-        + fmt(" vs %.17g)", double(dtGpu)));
+    const double dtRel = std::fabs(double(dtGpu) - double(dtCpu))/double(dtCpu);
+    test.check(exact ? dtCpu == dtGpu : dtRel <= 1e-6,
+        prec + (exact ? ": stableDt identical" : ": stableDt within 1e-6")
+      + fmt(" (%.17g vs %.17g)", double(dtCpu), double(dtGpu)));
     for (int k = 0; k < fixedSteps; ++k)
     {
         cpu.step(Real(0.5)*dtCpu);
         gpu->step(Real(0.5)*dtCpu);
     }
 
-    std::printf("%8s %8s %8s %10s %12s %12s %10s %8s\n", "t", "steps cpu",
-        "gpu", "differing", "max|diff|", "relL2(h)", "max|hu|", "launches");
-    bool allSame = true, clocksSame = true, moved = false;
-    long chunks = 0;
-    std::vector<Real> a[3], b[3];
-    for (const double t : times)
+    if (exact)
     {
+        std::printf("%8s %8s %8s %10s %12s %12s %12s %10s %8s\n", "t",
+            "steps cpu", "gpu", "differing", "max|diff|", "relL2(h)",
+            "relL2(m)", "max|hu|", "launches");
+    }
+    else
+    {
+        std::printf("%8s %8s %8s %10s %10s %10s %10s %10s %10s %10s %10s "
+            "%8s\n", "t", "steps cpu", "gpu", "e_gpu(h)", "e_fd(h)",
+            "bound(h)", "e_gpu(m)", "e_fd(m)", "bound(m)", "GPU-dbl(h)",
+            "GPU-dbl(m)", "launches");
+    }
+    bool allSame = true, clocksSame = true, moved = false, within = true;
+    bool stepsClose = true, timesSame = true;
+    long chunks = 0;
+    std::vector<State> cpuStates;
+    for (std::size_t n = 0; n < times.size(); ++n)
+    {
+        const double t = times[n];
         cpu.advanceTo(t);
         if (wallChunks)
         {
@@ -138,39 +207,93 @@ void compareRun
         {
             gpu->advanceTo(t);
         }
-        state(cpu, b);
-        state(*gpu, a);
-        const Difference d = difference(a, b);
-        std::printf("%8.3g %8ld %8ld %10ld %12.3e %12.3e %10.3g %8s\n", t,
-            cpu.steps(), gpu->steps(), d.differing, d.maxAbs, d.relL2h,
-            d.maxHu, wallChunks ? std::to_string(chunks).c_str() : "-");
-        allSame = allSame && d.differing == 0 && d.maxAbs == 0;
+        cpuStates.push_back(state(cpu));
+        const State a = state(*gpu);
+        const Difference d = difference(a, cpuStates.back());
+        const std::string launches =
+            wallChunks ? std::to_string(chunks) : "-";
+        moved = moved || d.maxHu > 0;
         clocksSame = clocksSame && cpu.steps() == gpu->steps()
             && cpu.time() == gpu->time() && cpu.lastDt() == gpu->lastDt();
-        moved = moved || d.maxHu > 0;
+        timesSame = timesSame && cpu.time() == gpu->time();
+        stepsClose = stepsClose && std::labs(cpu.steps() - gpu->steps())
+            <= 1 + cpu.steps()/100;
+        if (exact)
+        {
+            std::printf("%8.3g %8ld %8ld %10ld %12.3e %12.3e %12.3e %10.3g "
+                "%8s\n", t, cpu.steps(), gpu->steps(), d.differing, d.maxAbs,
+                d.relL2h, d.relL2m, d.maxHu, launches.c_str());
+            allSame = allSame && d.differing == 0 && d.maxAbs == 0;
+        }
+        else
+        {
+            const State& ref = (*cpuDouble)[n];
+            const Difference fd = difference(cpuStates.back(), ref);
+            const Difference gd = difference(a, ref);
+            const double bh = floatFactor*fd.relL2h + floatFloor;
+            const double bm = floatFactor*fd.relL2m + floatFloor;
+            // At rest (zero reference momentum) relL2m is 0 only if the GPU
+            // is at rest too
+            const bool ok = d.relL2h <= bh && d.relL2m <= bm;
+            std::printf("%8.3g %8ld %8ld %10.3e %10.3e %10.3e %10.3e %10.3e "
+                "%10.3e %10.3e %10.3e %8s%s\n", t, cpu.steps(), gpu->steps(),
+                d.relL2h, fd.relL2h, bh, d.relL2m, fd.relL2m, bm, gd.relL2h,
+                gd.relL2m, launches.c_str(), ok ? "" : "  <- over");
+            within = within && ok;
+        }
     }
     test.check(moved && cpu.steps() > fixedSteps,
-        std::string(prec) + ": the flow moves (non-zero momentum at an output time)");
-    test.check(allSame, std::string(prec) + ": h, hu, hv bit-identical at every output time");
-    test.check(clocksSame, std::string(prec) + ": steps, time and last dt identical");
+        prec + ": the flow moves (non-zero momentum at an output time)");
+    if (exact)
+    {
+        test.check(allSame, prec + ": h, hu, hv bit-identical at every output time");
+        test.check(clocksSame, prec + ": steps, time and last dt identical");
+    }
+    else
+    {
+        test.check(within, prec + fmt(": relL2 of h and of (hu, hv) against "
+            "the CPU <= %g x the CPU's float-double distance", floatFactor)
+          + fmt(" + %g at every output time", floatFloor));
+        test.check(timesSame, prec + ": output times hit exactly");
+        test.check(stepsClose, prec + fmt(": steps within 1 %% (+1) of the "
+            "CPU's (%g", double(cpu.steps()))
+          + fmt(" vs %g)", double(gpu->steps())));
+    }
     if (wallChunks)
     {
-        test.check(chunks > long(times.size()), std::string(prec)
+        test.check(chunks > long(times.size()), prec
             + fmt(": advance() returned on its wall budget (%g calls)",
                 double(chunks)));
     }
 
     const Diagnostics dc = cpu.diagnostics();
     const Diagnostics dg = gpu->diagnostics();
-    test.check
-    (
-        dc.volume == dg.volume && dc.wetCells == dg.wetCells
-     && dc.movingCells == dg.movingCells && dc.maxRate == dg.maxRate
-     && dc.hMax == dg.hMax,
-        std::string(prec) + fmt(": diagnostics identical (volume %.17g, ", dg.volume)
-      + fmt("%g wet cells)", double(dg.wetCells))
-    );
-    state(*gpu, gpuFinal);
+    if (exact)
+    {
+        test.check
+        (
+            dc.volume == dg.volume && dc.wetCells == dg.wetCells
+         && dc.movingCells == dg.movingCells && dc.maxRate == dg.maxRate
+         && dc.hMax == dg.hMax,
+            prec + fmt(": diagnostics identical (volume %.17g, ", dg.volume)
+          + fmt("%g wet cells)", double(dg.wetCells))
+        );
+    }
+    else
+    {
+        const double dv = std::fabs(dg.volume - dc.volume)/dc.volume;
+        const Difference fd = difference(cpuStates.back(), cpuDouble->back());
+        const double bh = floatFactor*fd.relL2h + floatFloor;
+        std::printf("diagnostics cpu / gpu: volume %.9g / %.9g, wet cells "
+            "%ld / %ld, moving %ld / %ld, max rate %.7g / %.7g, hMax %.7g / "
+            "%.7g\n", dc.volume, dg.volume, dc.wetCells, dg.wetCells,
+            dc.movingCells, dg.movingCells, dc.maxRate, dg.maxRate, dc.hMax,
+            dg.hMax);
+        test.check(dv <= bh, prec + fmt(": volume within the bound of h "
+            "(relative difference %.3e", dv) + fmt(" <= %.3e)", bh));
+    }
+    gpuFinal = state(*gpu);
+    return cpuStates;
 }
 
 template<class Problem>
@@ -183,13 +306,15 @@ int run
 )
 {
     Counter test;
-    std::vector<double> d[3];
-    std::vector<float> f[3];
-    compareRun(test, makeDouble(double(0)), times, wallChunks, fixedSteps, d);
-    compareRun(test, makeDouble(float(0)), times, wallChunks, fixedSteps, f);
+    State d, f;
+    const std::vector<State> cpuDouble = compareRun(test, makeDouble(double(0)),
+        times, wallChunks, fixedSteps, nullptr, d);
+    compareRun(test, makeDouble(float(0)), times, wallChunks, fixedSteps,
+        &cpuDouble, f);
     const Difference fd = difference(f, d);
-    std::printf("\nfloat on the GPU against double, at t = %g: max|diff| %.3e, "
-        "relL2(h) %.3e (for information)\n", times.back(), fd.maxAbs, fd.relL2h);
+    std::printf("\nfloat on the GPU against double on the GPU, at t = %g: "
+        "max|diff| %.3e, relL2(h) %.3e, relL2(hu, hv) %.3e (for "
+        "information)\n", times.back(), fd.maxAbs, fd.relL2h, fd.relL2m);
     return test.finish();
 }
 

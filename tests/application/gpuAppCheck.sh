@@ -7,11 +7,23 @@
 #     when external/bundle.tar.xz, made by bin/bundleOpenFOAM, is there;
 #     it is unpacked into the work directory and put on the paths):
 #     each case below runs with -backend cpu and -backend cuda from the same
-#     prepared mesh and fields, and every field written at every time must
-#     be byte-identical, in double and in single precision (both backends
-#     run the same operations in the same order; the CUDA build disables
-#     FMA contraction).  On a difference it prints the relative RMS
-#     difference of h at the last time.  Prints the cell-update rates.
+#     prepared mesh and fields.
+#     Double: every field written at every time must be byte-identical (both
+#     backends run the same operations in the same order, IEEE-rounded, and
+#     the CUDA build disables FMA contraction).  On a difference it prints
+#     the relative RMS difference of h at the last time.
+#     Single: the CUDA backend uses approximate division and square root
+#     (src/savageHutter/cuda/cudaSolverFloat.cu), so the files differ in the
+#     last bits.  The same times must be written, and at the last time the
+#     bound of tests/gpuCompare.C must hold for h:
+#       relRMS(cuda single - cpu single) <= 8 relRMS(cpu single - cpu double)
+#                                           + 1e-6
+#     (relRMS(a - b) = ||a - b||_2 / ||b||_2 over the cells).  The same
+#     figures for hU are printed, not checked: near rest (the pile at its
+#     last time) the remaining momentum is round-off, and its relative
+#     distances are O(1) whatever the backend.  A build with
+#     SH_CUDA_FLOAT_IEEE=ON is bit-identical in single too; the count of
+#     byte-identical files says so.  Prints the cell-update rates.
 #
 # Usage
 #     gpuAppCheck.sh <project dir> <work dir>
@@ -79,19 +91,89 @@ compare()
     local cpu="$work/$name/cpu-$precision" gpu="$work/$name/cuda-$precision"
     local times
     times="$(cd "$cpu" && ls -d [0-9]* | grep -E '^[0-9.e+-]+$' | grep -v '^0$' | sort -g)"
-    local nFiles=0 nDiff=0 t f
+    local nFiles=0 nDiff=0 nMissing=0 t f
     for t in $times
     do
         for f in h U hU regime
         do
             nFiles=$((nFiles + 1))
-            if [ ! -f "$cpu/$t/$f" ] || ! cmp -s "$cpu/$t/$f" "$gpu/$t/$f"
+            if [ ! -f "$cpu/$t/$f" ] || [ ! -f "$gpu/$t/$f" ]
+            then
+                nMissing=$((nMissing + 1))
+                nDiff=$((nDiff + 1))
+                echo "      missing: $t/$f"
+            elif ! cmp -s "$cpu/$t/$f" "$gpu/$t/$f"
             then
                 nDiff=$((nDiff + 1))
-                echo "      differs or missing: $t/$f"
+                [ "$precision" = double ] && echo "      differs: $t/$f"
             fi
         done
     done
+    local last
+    last="$(echo "$times" | tail -n1)"
+    if [ "$precision" = single ]
+    then
+        # To a tolerance: the same times written, then the bound at the last
+        local gpuTimes
+        gpuTimes="$(cd "$gpu" && ls -d [0-9]* | grep -E '^[0-9.e+-]+$' | grep -v '^0$' | sort -g)"
+        if [ "$nFiles" -eq 0 ] || [ "$nMissing" -ne 0 ] \
+           || [ "$times" != "$gpuTimes" ] \
+           || [ ! -d "$work/$name/cpu-double/$last" ]
+        then
+            echo "FAIL  $name single: times or files missing (cpu: $(echo $times)," \
+                "cuda: $(echo $gpuTimes); cpu double at $last needed)"
+            status=1
+            return
+        fi
+        local result
+        if result="$(python3 - "$cpu/$last" "$gpu/$last" \
+            "$work/$name/cpu-double/$last" <<'PY'
+import math, re, struct, sys
+def read(p):
+    """Values of the internal field (scalar or vector) as a list of tuples,
+    or one tuple for a uniform field"""
+    d = open(p, "rb").read()
+    m = re.search(rb"internalField\s+nonuniform\s+List<(scalar|vector)>\s*(\d+)\s*\(", d)
+    if m:
+        w = 1 if m.group(1) == b"scalar" else 3
+        n = int(m.group(2))
+        v = struct.unpack("<%dd" % (w * n), d[m.end():m.end() + 8 * w * n])
+        return [v[i:i + w] for i in range(0, w * n, w)]
+    m = re.search(rb"internalField\s+uniform\s+\(?([^;)]*)\)?\s*;", d)
+    return tuple(float(x) for x in m.group(1).split())
+def rel(a, b):
+    n = max(len(x) for x in (a, b) if isinstance(x, list)) \
+        if any(isinstance(x, list) for x in (a, b)) else 1
+    a, b = [x if isinstance(x, list) else [x] * n for x in (a, b)]
+    e = sum((p - q) ** 2 for u, v in zip(a, b) for p, q in zip(u, v))
+    r = sum(q * q for v in b for q in v)
+    return math.sqrt(e / r) if r > 0 else (math.inf if e > 0 else 0.0)
+cpu, gpu, dbl = sys.argv[1:4]
+ok = True
+out = []
+for f in ("h", "hU"):
+    eg = rel(read(gpu + "/" + f), read(cpu + "/" + f))
+    ef = rel(read(cpu + "/" + f), read(dbl + "/" + f))
+    bound = 8 * ef + 1e-6
+    if f == "h":
+        ok = eg <= bound
+        out.append("h %.3e <= bound %.3e (cpu single - cpu double %.3e)" % (eg, bound, ef))
+    else:
+        out.append("hU %.3e (cpu single - cpu double %.3e; not checked)" % (eg, ef))
+print("relRMS(cuda - cpu): " + "; ".join(out))
+sys.exit(0 if ok else 1)
+PY
+)"
+        then
+            echo "PASS  $name single: cuda ~ cpu at t = $last: $result;" \
+                "$((nFiles - nDiff)) of $nFiles field files byte-identical" \
+                "($(echo $times | wc -w) times)"
+        else
+            echo "FAIL  $name single: cuda against cpu at t = $last over the bound: $result"
+            status=1
+        fi
+        return
+    fi
     if [ "$nDiff" -eq 0 ] && [ "$nFiles" -gt 0 ]
     then
         echo "PASS  $name $precision: cuda = cpu, $nFiles field files identical ($(echo $times | wc -w) times)"
@@ -99,8 +181,6 @@ compare()
     fi
     echo "FAIL  $name $precision: $nDiff of $nFiles field files differ"
     status=1
-    local last
-    last="$(echo "$times" | tail -n1)"
     python3 - "$cpu/$last/h" "$gpu/$last/h" <<'PY'
 import math, re, struct, sys
 def read(p):

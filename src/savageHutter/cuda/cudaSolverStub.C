@@ -34,6 +34,12 @@ bool cudaAvailable(std::string* why)
 }
 
 
+bool cudaFloatApproximate()
+{
+    return false;
+}
+
+
 template<class Real>
 std::unique_ptr<Solver<Real>> makeCudaSolver(const Problem<Real>&)
 {
