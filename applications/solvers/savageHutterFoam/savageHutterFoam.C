@@ -57,6 +57,47 @@ std::string hms(const double seconds)
 }
 
 
+//- Time directory names: Time raises their precision only in its own
+//  time loop, which this solver does not use
+struct timeNames : public Time
+{
+    //- A precision whose name of t differs from every name in `taken` and
+    //  reads back as t to within a tenth of the distance to `previous`;
+    //  raises Time's precision to it (at most 17 digits)
+    static void distinguish
+    (
+        const scalar t,
+        const scalar previous,
+        const wordList& taken
+    )
+    {
+        const int old = precision_;
+        const scalar tol = 0.1*mag(t - previous);
+        while (precision_ < 17)
+        {
+            const word name = timeName(t);
+            scalar back = 0;
+            if
+            (
+                !taken.found(name)
+             && readScalar(name, back) && mag(back - t) <= tol
+            )
+            {
+                break;
+            }
+            ++precision_;
+        }
+        if (precision_ != old)
+        {
+            WarningInFunction
+                << "Increased the timePrecision from " << old << " to "
+                << precision_ << " to distinguish the time directory of t = "
+                << t << nl << endl;
+        }
+    }
+};
+
+
 //- The fields of a case and the structured view of its mesh
 struct avalancheCase
 {
@@ -357,6 +398,8 @@ void run(avalancheCase& ac, const word& backend, const scalar logInterval)
     };
 
     std::vector<Real> hs, hus, hvs;
+    wordList written(1, runTime.timeName());
+    scalar lastWritten = t0;
     auto write = [&]()
     {
         solver->getState(hs, hus, hvs);
@@ -368,9 +411,12 @@ void run(avalancheCase& ac, const word& backend, const scalar logInterval)
                 << " written time directory holds the last good state" << nl
                 << exit(FatalError);
         }
+        timeNames::distinguish(solver->time(), lastWritten, written);
         runTime.setTime(solver->time(), index0 + solver->steps());
         runTime.setDeltaT(solver->lastDt(), false);
         runTime.writeNow();
+        written.append(runTime.timeName());
+        lastWritten = solver->time();
     };
     auto logIfDue = [&]()
     {
