@@ -220,10 +220,11 @@ struct avalancheCase
         }
         forAll(h, c)
         {
-            pb.zb[c] = Real(zb[c]);
-            pb.h[c] = Real(h[c]);
-            pb.hu[c] = Real(hasMomentum ? hU[c].x() : h[c]*U[c].x());
-            pb.hv[c] = Real(hasMomentum ? hU[c].y() : h[c]*U[c].y());
+            const label k = smesh.gridIndex(c);
+            pb.zb[k] = Real(zb[c]);
+            pb.h[k] = Real(h[c]);
+            pb.hu[k] = Real(hasMomentum ? hU[c].x() : h[c]*U[c].x());
+            pb.hv[k] = Real(hasMomentum ? hU[c].y() : h[c]*U[c].y());
         }
         return pb;
     }
@@ -238,13 +239,13 @@ struct avalancheCase
         const std::vector<Real>& hvs
     )
     {
-        forAll(h, c)
+        forAll(hs, k)
         {
             if
             (
-                !std::isfinite(double(hs[c])) || hs[c] < 0
-             || !std::isfinite(double(hus[c]))
-             || !std::isfinite(double(hvs[c]))
+                !std::isfinite(double(hs[k])) || hs[k] < 0
+             || !std::isfinite(double(hus[k]))
+             || !std::isfinite(double(hvs[k]))
             )
             {
                 return false;
@@ -253,8 +254,9 @@ struct avalancheCase
         const scalar hDry = input.model.hDry;
         forAll(h, c)
         {
-            const scalar hc = hs[c];
-            const vector m(hus[c], hvs[c], 0);
+            const label k = smesh.gridIndex(c);
+            const scalar hc = hs[k];
+            const vector m(hus[k], hvs[k], 0);
             h[c] = hc;
             hU[c] = m;
             U[c] = hc > 0 ? m/hc : vector::zero;

@@ -89,6 +89,21 @@ structuredMesh::structuredMesh(const fvMesh& mesh)
             << exit(FatalError);
     }
 
+    // Every face along x, y or z: a block aligned with the axes
+    const vectorField& Sf = mesh.faceAreas();
+    forAll(Sf, facei)
+    {
+        const vector n = Sf[facei]/mag(Sf[facei]);
+        if (cmptMax(cmptMag(n)) < 1 - lengthTol)
+        {
+            FatalErrorInFunction
+                << "Face " << facei << " has normal " << n << ", not along"
+                << " x, y or z.  The block must be aligned with the axes:"
+                << " x downslope, y cross-slope, one cell in z." << nl
+                << exit(FatalError);
+        }
+    }
+
     const pointField& pts = mesh.points();
     const boundBox bb(pts, false);
     const vector span = bb.span();
@@ -153,8 +168,10 @@ structuredMesh::structuredMesh(const fvMesh& mesh)
             << exit(FatalError);
     }
 
-    // Axis-aligned boxes (no rotation or skew), in one block's cell order
+    // Axis-aligned boxes, each grid cell exactly once
     const vectorField& C = mesh.C().primitiveField();
+    gridIndex_.setSize(nCells);
+    labelList meshCell(nCells, -1);
     const scalarField& V = mesh.V().field();
     const scalar vCell = dx_*dy_*span.z();
     forAll(C, c)
@@ -169,17 +186,19 @@ structuredMesh::structuredMesh(const fvMesh& mesh)
                 << " direction of the block." << nl
                 << exit(FatalError);
         }
-        const label i = label((C[c].x() - xMin_)/dx_);
-        const label j = label((C[c].y() - yMin_)/dy_);
-        if (c != i + nx_*j)
+        const label i = min(label((C[c].x() - xMin_)/dx_), nx_ - 1);
+        const label j = min(label((C[c].y() - yMin_)/dy_), ny_ - 1);
+        const label k = i + nx_*j;
+        if (meshCell[k] >= 0)
         {
             FatalErrorInFunction
-                << "Cell " << c << " at " << C[c] << " is grid cell ("
-                << i << ", " << j << "), not cell " << c << " of a single"
-                << " blockMesh block (i fastest).  Multi-block or renumbered"
-                << " meshes are not supported." << nl
-                << exit(FatalError);
+                << "Cells " << meshCell[k] << " and " << c << " both lie in"
+                << " grid cell (" << i << ", " << j << ") of the " << nx_
+                << " x " << ny_ << " block: the mesh is not one uniform"
+                << " block." << nl << exit(FatalError);
         }
+        meshCell[k] = c;
+        gridIndex_[c] = k;
     }
 
     // Boundary faces: front/back in empty patches, the rest on the sides
