@@ -312,6 +312,21 @@ else
     fail "inflow: the run failed or the inflow was not recognised (see $d/log.savageHutterFoam)"
 fi
 
+# -- controlDict functions run at the write times ------------------------------
+d=$(newCase functionObjects)
+foamDictionary "$d/system/controlDict" -entry functions -set \
+    '{ hRange { type fieldMinMax; libs ("libfieldFunctionObjects.so"); fields (h); } }' \
+    > /dev/null
+(cd "$d" && savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1)
+dat="$(find "$d/postProcessing" -name 'fieldMinMax.dat' 2>/dev/null | head -n1)"
+rows=$(grep -cv '^#' "$dat" 2>/dev/null)
+if [ -n "$dat" ] && [ "$rows" -eq 2 ] && grep -q "^0.05 " "$dat" && grep -q "^0.1 " "$dat"
+then
+    pass "function objects: fieldMinMax wrote $rows rows (t = 0.05, 0.1)"
+else
+    fail "function objects: expected 2 rows of fieldMinMax, got '${rows:-none}' (see $d)"
+fi
+
 # -- writeControl timeStep: a time directory every 10 steps and at the end --
 d=$(newCase writeControlTimeStep)
 setEntry "$d/system/controlDict" writeControl timeStep

@@ -371,6 +371,16 @@ void run(avalancheCase& ac, const word& backend, const scalar logInterval)
         << " wet cells, hMax " << d0.hMax << " m" << nl << nl
         << "Starting time loop" << nl << endl;
 
+    // controlDict functions: they see the states of the write times (the
+    // time steps themselves run inside the backend)
+    functionObjectList& functions = runTime.functionObjects();
+    functions.start();
+    if (functions.size())
+    {
+        Info<< "Function objects: " << functions.size() << ", executed at"
+            << " every write time" << nl << endl;
+    }
+
     const wallClock::time_point start = wallClock::now();
     wallClock::time_point lastLog = start;
 
@@ -417,6 +427,7 @@ void run(avalancheCase& ac, const word& backend, const scalar logInterval)
         runTime.setTime(solver->time(), index0 + solver->steps());
         runTime.setDeltaT(solver->lastDt(), false);
         runTime.writeNow();
+        functions.execute();
         written.append(runTime.timeName());
         lastWritten = solver->time();
     };
@@ -490,6 +501,8 @@ void run(avalancheCase& ac, const word& backend, const scalar logInterval)
             write();
         }
     }
+
+    functions.end();
 
     const double wall = secondsSince(start);
     if (solver->steps() > 0)
