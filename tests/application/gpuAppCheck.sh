@@ -14,13 +14,17 @@
 #     the relative RMS difference of h at the last time.
 #     Single: the CUDA backend uses approximate division and square root
 #     (src/savageHutter/cuda/cudaSolverFloat.cu), so the files differ in the
-#     last bits.  The same times must be written, and at the last time the
-#     bound of tests/gpuCompare.C must hold for h:
+#     last bits.  The same times must be written, and at the last time
 #       relRMS(cuda single - cpu single) <= 8 relRMS(cpu single - cpu double)
 #                                           + 1e-6
-#     (relRMS(a - b) = ||a - b||_2 / ||b||_2 over the cells).  The same
-#     figures for hU are printed, not checked: near rest (the pile at its
-#     last time) the remaining momentum is round-off, and its relative
+#     must hold for h (relRMS(a - b) = ||a - b||_2 / ||b||_2 over the
+#     cells): the GPU in single no farther from the CPU in single than 8
+#     times float's own distance from double (tests/gpuCompare.C bounds by
+#     the spread of a one-ulp perturbation instead, which needs a run this
+#     script cannot make; there the factor 8 is argued).  On these cases
+#     the two distances are of the same size (measured: ratio 0.9-1.1).
+#     The same figures for hU are printed, not checked: near rest (the pile
+#     at its last time) the remaining momentum is round-off, and its relative
 #     distances are O(1) whatever the backend.  A build with
 #     SH_CUDA_FLOAT_IEEE=ON is bit-identical in single too; the count of
 #     byte-identical files says so.  Prints the cell-update rates.
