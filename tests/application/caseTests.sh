@@ -132,6 +132,10 @@ d=$(newCase steepInclination)
 setEntry "$d/$tp" inclination "constant 95"
 expectFailure steepInclination "inclination"
 
+d=$(newCase misspeltTransportKeyword)
+foamDictionary "$d/$tp" -entry lamda -add 0.5 > /dev/null
+expectFailure misspeltTransportKeyword "lamda" "lambda" "transportProperties"
+
 d=$(newCase negativeGravity)
 setEntry "$d/$tp" g -9.81
 expectFailure negativeGravity "gravity must be positive"
@@ -368,13 +372,28 @@ do
         fi
     done
 done
-if $same && grep -q "Starting time loop" "$part/log.2" \
+if $same && grep -q "Reading field hU: the momentum" "$part/log.2" \
 && grep -q "^Time = 0.3 " "$part/log.2" \
 && ! grep -q "^Time = 0.1 " "$part/log.2"
 then
     pass "restart: 0 -> 0.15, then latestTime -> 0.3, files identical to 0 -> 0.3"
 else
     fail "restart does not continue exactly (see $part)"
+fi
+
+# -- A restart whose U was edited after the write uses h U, not the stale hU --
+d=$(newCase editedRestart)
+setEntry "$d/system/controlDict" endTime 0.05
+(cd "$d" && savageHutterFoam -backend cpu > log.1 2>&1)
+foamDictionary "$d/0.05/U" -entry internalField -set "uniform (0 0 0)" > /dev/null
+setEntry "$d/system/controlDict" startFrom latestTime
+setEntry "$d/system/controlDict" endTime 0.1
+(cd "$d" && savageHutterFoam -backend cpu > log.2 2>&1)
+if grep -q "hU disagrees with h U" "$d/log.2" && grep -q "^End" "$d/log.2"
+then
+    pass "edited restart: U set to 0 in 0.05/U is used (hU ignored, with a warning)"
+else
+    fail "edited restart: no warning, or the run failed (see $d/log.2)"
 fi
 
 # -- foamToVTK reads the output --------------------------------------------------

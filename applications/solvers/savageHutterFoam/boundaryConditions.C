@@ -90,6 +90,12 @@ sideCondition classify
                 << "Patch " << c.patch << ": inflow thickness h = " << c.h
                 << " must be finite and >= 0" << nl << exit(FatalIOError);
         }
+        if (!std::isfinite(c.U.x()) || !std::isfinite(c.U.y()))
+        {
+            FatalIOErrorInFunction(U.objectPath())
+                << "Patch " << c.patch << ": inflow velocity U = " << c.U
+                << " must be finite" << nl << exit(FatalIOError);
+        }
     }
     else
     {

@@ -49,6 +49,12 @@ const wordList solverKeywords
     "limiter", "stoppingCriterion", "staticResistance", "hDry", "holdResting"
 });
 
+const wordList transportKeywords
+({
+    "g", "epsilon", "lambda", "inclination", "earthPressure", "phi",
+    "frictionModel"
+});
+
 } // namespace
 
 
@@ -74,6 +80,22 @@ caseInput::caseInput(const fvMesh& mesh)
 {
     const dictionary& tp = transportProperties_;
     Info<< "Reading transportProperties" << nl;
+
+    // A misspelt keyword (lamda, epsilom) must not fall back to a default;
+    // <anything>Coeffs sub-dictionaries are models' coefficients
+    for (const word& key : tp.toc())
+    {
+        const bool coeffs =
+            key.size() > 6 && key.compare(key.size() - 6, 6, "Coeffs") == 0;
+        if (!transportKeywords.found(key) && !coeffs && key != "FoamFile")
+        {
+            FatalIOErrorInFunction(tp)
+                << "Unknown keyword '" << key << "'." << nl
+                << "Valid keywords: " << flatOutput(transportKeywords)
+                << " and <model>Coeffs sub-dictionaries" << nl
+                << exit(FatalIOError);
+        }
+    }
 
     model.g = tp.get<scalar>("g");
     model.epsilon = tp.getOrDefault<scalar>("epsilon", 1);

@@ -165,7 +165,44 @@ struct avalancheCase
             Info<< "No field zb: flat bed on the reference surface" << nl;
         }
         checkInitialFields();
+        checkMomentum();
         Info<< endl;
+    }
+
+    //- hU of a restart is the exact momentum; a U edited after the write
+    //  (setFields, setAvalancheFields into the latest time) makes them
+    //  disagree, and then U wins
+    void checkMomentum()
+    {
+        if (!hasMomentum)
+        {
+            return;
+        }
+        label disagree = 0;
+        forAll(h, c)
+        {
+            const vector hu = h[c]*U[c];
+            if
+            (
+                h[c] > input.model.hDry
+             && mag(hU[c] - hu) > 1e-9*(mag(hU[c]) + mag(hu)) + VSMALL
+            )
+            {
+                ++disagree;
+            }
+        }
+        if (disagree)
+        {
+            WarningInFunction
+                << "hU disagrees with h U in " << disagree << " cells (h or U"
+                << " edited after the write?): using h U" << nl << endl;
+            hasMomentum = false;
+        }
+        else
+        {
+            Info<< "Reading field hU: the momentum, exact for the restart"
+                << nl;
+        }
     }
 
     void checkInitialFields() const
@@ -390,9 +427,14 @@ void run(avalancheCase& ac, const word& backend, const scalar logInterval)
         const double t = solver->time();
         const double done = (t - t0)/max(endTime - t0, SMALL);
         const double wall = secondsSince(start);
+        // The step the state now allows (the last step taken may have been
+        // shortened to land on a write time)
+        const double dtNow = d.maxRate > 0
+            ? min(ac.input.maxDeltaT, ac.input.model.cfl/d.maxRate)
+            : solver->lastDt();
         Info<< "Time = " << t << " (" << label(100*done) << "%)"
-            << "  deltaT = " << solver->lastDt()
-            << "  Co = " << solver->lastDt()*d.maxRate
+            << "  deltaT = " << dtNow
+            << "  Co = " << dtNow*d.maxRate
             << "  volume = " << d.volume
             << "  wet = " << d.wetCells
             << "  moving = " << d.movingCells
@@ -443,11 +485,12 @@ void run(avalancheCase& ac, const word& backend, const scalar logInterval)
     if (writeControl == "timeStep")
     {
         // Steps driven one by one from here, with the arithmetic of
-        // Solver::advance (the GPU then synchronises every step)
-        const label every = label(w + 0.5);
+        // Solver::advance (the GPU then synchronises every step); a write
+        // when the time index is a multiple of writeInterval, as in Time
+        const label every = max(label(w), label(1));
         while (solver->time() < endTime)
         {
-            for (label n = 0; n < every && solver->time() < endTime; ++n)
+            do
             {
                 double dt = double(solver->stableDt());
                 dt = min(dt, ac.input.maxDeltaT);
@@ -460,6 +503,11 @@ void run(avalancheCase& ac, const word& backend, const scalar logInterval)
                 }
                 logIfDue();
             }
+            while
+            (
+                solver->time() < endTime
+             && (index0 + solver->steps()) % every != 0
+            );
             write();
         }
     }
