@@ -363,7 +363,7 @@ setEntry "$part/system/controlDict" startFrom latestTime
 same=true
 for t in 0.15 0.2 0.25 0.3
 do
-    for f in h U hU regime
+    for f in h U hU regime hMax UMax
     do
         if ! cmp -s "$full/$t/$f" "$part/$t/$f"
         then
@@ -396,13 +396,52 @@ else
     fail "edited restart: no warning, or the run failed (see $d/log.2)"
 fi
 
+# -- Peak maps: hMax >= h and UMax >= |U| (wet cells) at every write time,
+#    and neither decreases in time ------------------------------------------
+if python3 - "$full" <<'PY'
+import os, re, sys
+case = sys.argv[1]
+def field(t, name):
+    text = open(os.path.join(case, t, name)).read()
+    m = re.search(r"internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\(", text)
+    if not m:
+        v = re.search(r"internalField\s+uniform\s+\(?([^;)]*)", text).group(1).split()
+        return None, [float(x) for x in v]
+    body = text[m.end():text.index("\n)", m.end())]
+    vals = [float(x) for x in body.replace("(", " ").replace(")", " ").split()]
+    return (3 if m.group(1) == "vector" else 1), vals
+times = sorted((d for d in os.listdir(case) if re.fullmatch(r"[0-9.]+", d) and d != "0"), key=float)
+prev = None
+bad = 0
+for t in times:
+    _, h = field(t, "h")
+    _, U = field(t, "U")
+    _, hMax = field(t, "hMax")
+    _, UMax = field(t, "UMax")
+    for c in range(len(h)):
+        speed = (U[3*c]**2 + U[3*c+1]**2) ** 0.5
+        if hMax[c] < h[c] or (h[c] > 1e-6 and UMax[c] < speed * (1 - 1e-12)):
+            bad += 1
+        if prev and (hMax[c] < prev[0][c] or UMax[c] < prev[1][c]):
+            bad += 1
+    prev = (hMax, UMax)
+print("      %d times, %d cells, %d violations; max hMax %.6g, max UMax %.6g"
+      % (len(times), len(h), bad, max(hMax), max(UMax)))
+sys.exit(1 if bad or len(times) < 2 or max(UMax) <= 0 else 0)
+PY
+then
+    pass "peak maps: hMax >= h, UMax >= |U|, both non-decreasing in time"
+else
+    fail "peak maps hMax/UMax inconsistent (see $full)"
+fi
+
 # -- foamToVTK reads the output --------------------------------------------------
 if (cd "$full" && foamToVTK > log.foamToVTK 2>&1)
 then
     vtu="$(ls "$full"/VTK/*/internal.vtu 2>/dev/null | sort -t_ -k2 -n | tail -n1)"
     names="$(grep -ao "Name='[a-zA-Z]*'" "$vtu" 2>/dev/null | sort -u | tr '\n' ' ')"
     missing=""
-    for f in h U hU zb regime
+    for f in h U hU zb regime hMax UMax
     do
         case "$names" in *"Name='$f'"*) ;; *) missing="$missing $f" ;; esac
     done
@@ -410,7 +449,7 @@ then
     && grep -aq "NumberOfCells='512'" "$vtu" \
     && [ "$(ls "$full"/VTK/*.vtm | wc -l)" -eq 7 ]
     then
-        pass "foamToVTK: 7 times, h U hU zb regime on 512 cells in ${vtu#$full/}"
+        pass "foamToVTK: 7 times, h U hU zb regime hMax UMax on 512 cells in ${vtu#$full/}"
     else
         fail "foamToVTK output lacks$missing or 512 cells or 7 times (see $full/VTK)"
     fi

@@ -18,8 +18,10 @@ Description
     write times exactly.
 
     Written at write times: h, U, hU (the conserved momentum, read back on
-    restart so that a restart continues exactly), zb and regime (0 dry,
-    1 at rest, 2 moving).
+    restart so that a restart continues exactly), zb, regime (0 dry,
+    1 at rest, 2 moving), and the hazard maps hMax and UMax: the largest
+    thickness and speed of each cell since the start of the run (read back
+    on restart, so that they cover the whole simulation).
 
 Usage
     savageHutterFoam [-backend auto|cpu|cuda] [-precision double|single]
@@ -110,9 +112,13 @@ struct avalancheCase
     volScalarField zb;
     volVectorField hU;
     volScalarField regime;
+    volScalarField hMax;
+    volScalarField UMax;
     FixedList<sideCondition, 4> sides;
     //- Momentum as written at the start time (exact restarts)
     bool hasMomentum;
+    //- Peak maps of an earlier part of the run (restart)
+    bool hasPeaks;
 
     static IOobject io(const Time& t, const fvMesh& m, const word& name,
                        IOobject::readOption r)
@@ -140,9 +146,17 @@ struct avalancheCase
             dimensionedVector(dimLength*dimVelocity, Zero)),
         regime(io(t, m, "regime", IOobject::NO_READ), m,
             dimensionedScalar(dimless, Zero)),
+        hMax(io(t, m, "hMax", IOobject::READ_IF_PRESENT), m,
+            dimensionedScalar(dimLength, Zero)),
+        UMax(io(t, m, "UMax", IOobject::READ_IF_PRESENT), m,
+            dimensionedScalar(dimVelocity, Zero)),
         sides(readBoundaryConditions(smesh, h, U)),
         hasMomentum(io(t, m, "hU", IOobject::MUST_READ)
-            .typeHeaderOk<volVectorField>(true))
+            .typeHeaderOk<volVectorField>(true)),
+        hasPeaks(io(t, m, "hMax", IOobject::MUST_READ)
+            .typeHeaderOk<volScalarField>(true)
+         && io(t, m, "UMax", IOobject::MUST_READ)
+            .typeHeaderOk<volScalarField>(true))
     {
         Info<< "Mesh: " << smesh.nx() << " x " << smesh.ny()
             << " cells of " << smesh.dx() << " x " << smesh.dy()
@@ -255,9 +269,19 @@ struct avalancheCase
         {
             input.fail(e);
         }
+        if (hasPeaks)
+        {
+            pb.hPeak.resize(h.size());
+            pb.speedPeak.resize(h.size());
+        }
         forAll(h, c)
         {
             const label k = smesh.gridIndex(c);
+            if (hasPeaks)
+            {
+                pb.hPeak[k] = Real(hMax[c]);
+                pb.speedPeak[k] = Real(UMax[c]);
+            }
             pb.zb[k] = Real(zb[c]);
             pb.h[k] = Real(h[c]);
             pb.hu[k] = Real(hasMomentum ? hU[c].x() : h[c]*U[c].x());
@@ -273,7 +297,9 @@ struct avalancheCase
     (
         const std::vector<Real>& hs,
         const std::vector<Real>& hus,
-        const std::vector<Real>& hvs
+        const std::vector<Real>& hvs,
+        const std::vector<Real>& hPeak,
+        const std::vector<Real>& speedPeak
     )
     {
         forAll(hs, k)
@@ -299,11 +325,18 @@ struct avalancheCase
             U[c] = hc > 0 ? m/hc : vector::zero;
             regime[c] =
                 hc <= hDry ? 0 : (m.x() != 0 || m.y() != 0 ? 2 : 1);
+            if (hPeak.size() == hs.size())
+            {
+                hMax[c] = hPeak[k];
+                UMax[c] = speedPeak[k];
+            }
         }
         h.correctBoundaryConditions();
         U.correctBoundaryConditions();
         hU.correctBoundaryConditions();
         regime.correctBoundaryConditions();
+        hMax.correctBoundaryConditions();
+        UMax.correctBoundaryConditions();
         return true;
     }
 
@@ -451,13 +484,14 @@ void run(avalancheCase& ac, const word& backend, const scalar logInterval)
         lastLog = wallClock::now();
     };
 
-    std::vector<Real> hs, hus, hvs;
+    std::vector<Real> hs, hus, hvs, hPeak, speedPeak;
     wordList written(1, runTime.timeName());
     scalar lastWritten = t0;
     auto write = [&]()
     {
         solver->getState(hs, hus, hvs);
-        if (!ac.store(hs, hus, hvs))
+        solver->getPeaks(hPeak, speedPeak);
+        if (!ac.store(hs, hus, hvs, hPeak, speedPeak))
         {
             FatalErrorInFunction
                 << "The solution at t = " << solver->time() << " is not"

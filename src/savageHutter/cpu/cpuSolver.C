@@ -58,6 +58,10 @@ CpuSolver<Real>::CpuSolver(const Problem<Real>& pb, bool parallel)
         }
     }
     Unew_ = U_;
+
+    const HostPeaks<Real> peaks(pb);
+    hPeak_ = peaks.h;
+    speedPeak_ = peaks.speed;
 }
 
 
@@ -195,6 +199,7 @@ void CpuSolver<Real>::advanceStep(Real dt)
         for (int i = 0; i < nx; ++i)
         {
             partialWetCell(m, Un, i, j);
+            updatePeaks(m, Un, hPeak_.data(), speedPeak_.data(), i, j);
         }
     }
 
@@ -227,6 +232,30 @@ void CpuSolver<Real>::getState
         }
     }
 }
+
+template<class Real>
+void CpuSolver<Real>::getPeaks
+(
+    std::vector<Real>& hPeak,
+    std::vector<Real>& speedPeak
+)
+{
+    const Grid<Real>& g = model_.g;
+    const std::size_t n = std::size_t(g.nx)*g.ny;
+    hPeak.resize(n);
+    speedPeak.resize(n);
+    for (int j = 0; j < g.ny; ++j)
+    {
+        for (int i = 0; i < g.nx; ++i)
+        {
+            const int c = g.idx(i, j);
+            const std::size_t k = i + std::size_t(j)*g.nx;
+            hPeak[k] = hPeak_[c];
+            speedPeak[k] = speedPeak_[c];
+        }
+    }
+}
+
 
 template<class Real>
 Diagnostics CpuSolver<Real>::diagnostics()

@@ -1,5 +1,6 @@
 #include "problem.H"
 #include "modelInput.H"
+#include "../physics/scheme.H"
 
 #include <cmath>
 #include <stdexcept>
@@ -155,9 +156,52 @@ HostGeometry<Real>::HostGeometry(const Problem<Real>& pb)
     }
 }
 
+template<class Real>
+HostPeaks<Real>::HostPeaks(const Problem<Real>& pb)
+{
+    const Grid<Real>& g = pb.grid;
+    h.assign(g.size(), Real(0));
+    speed.assign(g.size(), Real(0));
+
+    // The initial state on the padded grid, as the backends hold it
+    std::vector<Real> sh(g.size(), Real(0)), shu(sh), shv(sh);
+    const bool given = pb.hPeak.size() == std::size_t(pb.nCells())
+                    && pb.speedPeak.size() == std::size_t(pb.nCells());
+    for (int j = 0; j < g.ny; ++j)
+    {
+        for (int i = 0; i < g.nx; ++i)
+        {
+            const int c = g.idx(i, j);
+            const int k = pb.cell(i, j);
+            sh[c] = pb.h[k];
+            shu[c] = pb.hu[k];
+            shv[c] = pb.hv[k];
+            if (given)
+            {
+                h[c] = pb.hPeak[k];
+                speed[c] = pb.speedPeak[k];
+            }
+        }
+    }
+    Model<Real> m;
+    m.p = pb.params;
+    m.g = g;
+    const Fields<Real> U{sh.data(), shu.data(), shv.data()};
+    for (int j = 0; j < g.ny; ++j)
+    {
+        for (int i = 0; i < g.nx; ++i)
+        {
+            updatePeaks(m, U, h.data(), speed.data(), i, j);
+        }
+    }
+}
+
+
 template struct Problem<double>;
 template struct Problem<float>;
 template struct HostGeometry<double>;
 template struct HostGeometry<float>;
+template struct HostPeaks<double>;
+template struct HostPeaks<float>;
 
 } // namespace sh
