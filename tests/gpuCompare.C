@@ -62,6 +62,7 @@
 #include "gpuCases.H"
 #include "cuda/cudaSolver.H"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -278,6 +279,13 @@ std::vector<State> compareRun
         prec + ": the flow moves (non-zero momentum at an output time)");
     if (exact)
     {
+        std::vector<Real> hc, sc, hg, sg;
+        cpu.getPeaks(hc, sc);
+        gpu->getPeaks(hg, sg);
+        const double top = hc.empty() ? 0.0
+            : double(*std::max_element(sc.begin(), sc.end()));
+        test.check(!hc.empty() && hc == hg && sc == sg && top > 0, prec
+            + fmt(": peak maps hMax, UMax bit-identical (max UMax %.4g)", top));
         test.check(allSame, prec + ": h, hu, hv bit-identical at every output time");
         test.check(clocksSame, prec + ": steps, time and last dt identical");
     }

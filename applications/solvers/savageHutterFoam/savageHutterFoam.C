@@ -325,11 +325,8 @@ struct avalancheCase
             U[c] = hc > 0 ? m/hc : vector::zero;
             regime[c] =
                 hc <= hDry ? 0 : (m.x() != 0 || m.y() != 0 ? 2 : 1);
-            if (hPeak.size() == hs.size())
-            {
-                hMax[c] = hPeak[k];
-                UMax[c] = speedPeak[k];
-            }
+            hMax[c] = hPeak[k];
+            UMax[c] = speedPeak[k];
         }
         h.correctBoundaryConditions();
         U.correctBoundaryConditions();
