@@ -98,7 +98,7 @@ compare()
     local nFiles=0 nDiff=0 nMissing=0 t f
     for t in $times
     do
-        for f in h U hU regime
+        for f in h U hU regime hMax UMax
         do
             nFiles=$((nFiles + 1))
             if [ ! -f "$cpu/$t/$f" ] || [ ! -f "$gpu/$t/$f" ]
