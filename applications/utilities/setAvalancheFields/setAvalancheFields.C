@@ -163,38 +163,35 @@ PtrList<entry> shapes
     return list;
 }
 
-void setScalar
-(
-    const dictionary& dict,
-    const word& name,
-    volScalarField& f,
-    const volVectorField::Internal& C
-)
+//- A shape's value at p: scalars from every shape, vectors from regions
+template<class Type>
+Type shapeValue(const word& type, const dictionary& d, const point& p);
+
+template<>
+scalar shapeValue<scalar>(const word& type, const dictionary& d, const point& p)
 {
-    const PtrList<entry> list(shapes(dict, name, scalarShapes));
-    f.primitiveFieldRef() = Zero;
-    forAll(list, k)
-    {
-        const word& type = list[k].keyword();
-        const dictionary& d = list[k].dict();
-        Info<< "    " << name << ": " << type << " " << d << endl;
-        forAll(C, c)
-        {
-            f[c] += scalarShape(type, d, C[c]);
-        }
-    }
-    f.correctBoundaryConditions();
+    return scalarShape(type, d, p);
 }
 
-void setVector
+template<>
+vector shapeValue<vector>(const word& type, const dictionary& d, const point& p)
+{
+    vector v(Zero);
+    return region(type, d, p, v) ? v : vector(Zero);
+}
+
+//- Field `name` as the sum of its shapes at the cell centres
+template<class Type>
+void setField
 (
     const dictionary& dict,
     const word& name,
-    volVectorField& f,
+    const wordList& valid,
+    GeometricField<Type, fvPatchField, volMesh>& f,
     const volVectorField::Internal& C
 )
 {
-    const PtrList<entry> list(shapes(dict, name, vectorShapes));
+    const PtrList<entry> list(shapes(dict, name, valid));
     f.primitiveFieldRef() = Zero;
     forAll(list, k)
     {
@@ -203,11 +200,7 @@ void setVector
         Info<< "    " << name << ": " << type << " " << d << endl;
         forAll(C, c)
         {
-            vector v(Zero);
-            if (region(type, d, C[c], v))
-            {
-                f[c] += v;
-            }
+            f[c] += shapeValue<Type>(type, d, C[c]);
         }
     }
     f.correctBoundaryConditions();
@@ -267,7 +260,7 @@ int main(int argc, char *argv[])
     if (dict.found("h"))
     {
         volScalarField h(fieldIO(mesh, "h"), mesh);
-        setScalar(dict, "h", h, C);
+        setField(dict, "h", scalarShapes, h, C);
         forAll(h, c)
         {
             if (h[c] < 0)
@@ -284,7 +277,7 @@ int main(int argc, char *argv[])
     if (dict.found("U"))
     {
         volVectorField U(fieldIO(mesh, "U"), mesh);
-        setVector(dict, "U", U, C);
+        setField(dict, "U", vectorShapes, U, C);
         U.write();
     }
     if (dict.found("zb"))
@@ -307,7 +300,7 @@ int main(int argc, char *argv[])
                 )
             );
         }
-        setScalar(dict, "zb", zb(), C);
+        setField(dict, "zb", scalarShapes, zb(), C);
         Info<< "Writing zb: range [" << gMin(zb().primitiveField()) << ", "
             << gMax(zb().primitiveField()) << "] m" << nl << endl;
         zb().write();

@@ -1,4 +1,5 @@
 #include "cpuSolver.H"
+#include "../host/padded.H"
 
 #include <algorithm>
 #include <limits>
@@ -46,17 +47,9 @@ CpuSolver<Real>::CpuSolver(const Problem<Real>& pb, bool parallel)
     Fy_.resize(n);
     theta_.assign(n, Real(1));
 
-    for (int j = 0; j < g.ny; ++j)
-    {
-        for (int i = 0; i < g.nx; ++i)
-        {
-            const int c = g.idx(i, j);
-            const int k = pb.cell(i, j);
-            U_.h[c] = pb.h[k];
-            U_.hu[c] = pb.hu[k];
-            U_.hv[c] = pb.hv[k];
-        }
-    }
+    U_.h = toPadded(g, pb.h);
+    U_.hu = toPadded(g, pb.hu);
+    U_.hv = toPadded(g, pb.hv);
     Unew_ = U_;
 
     const HostPeaks<Real> peaks(pb);
@@ -82,30 +75,6 @@ int CpuSolver<Real>::nThreads() const
 #else
     return 1;
 #endif
-}
-
-
-template<class Real>
-void CpuSolver<Real>::fillGhosts(const Fields<Real>& U)
-{
-    const Grid<Real>& g = model_.g;
-    const int ng = Grid<Real>::ng;
-    for (int j = 0; j < g.ny; ++j)
-    {
-        for (int k = 1; k <= ng; ++k)
-        {
-            fillGhostCell(model_, U, xMin, -k, j);
-            fillGhostCell(model_, U, xMax, g.nx - 1 + k, j);
-        }
-    }
-    for (int k = 1; k <= ng; ++k)
-    {
-        for (int i = -ng; i < g.nx + ng; ++i)
-        {
-            fillGhostCell(model_, U, yMin, i, -k);
-            fillGhostCell(model_, U, yMax, i, g.ny - 1 + k);
-        }
-    }
 }
 
 
@@ -144,7 +113,7 @@ void CpuSolver<Real>::advanceStep(Real dt)
     const int nx = g.nx;
     const int ny = g.ny;
 
-    fillGhosts(U);
+    fillGhostCells(m, U);
 
     #pragma omp parallel for if(parallel_) schedule(static)
     for (int j = 0; j < ny; ++j)
@@ -155,7 +124,7 @@ void CpuSolver<Real>::advanceStep(Real dt)
         }
     }
 
-    fillGhosts(Uh);
+    fillGhostCells(m, Uh);
 
     // Each x-face i+1/2 for i = -1..nx-1, each y-face j+1/2 for j = -1..ny-1
     #pragma omp parallel for if(parallel_) schedule(static)
@@ -215,23 +184,11 @@ void CpuSolver<Real>::getState
     std::vector<Real>& hv
 )
 {
-    const Grid<Real>& g = model_.g;
-    const std::size_t n = std::size_t(g.nx)*g.ny;
-    h.resize(n);
-    hu.resize(n);
-    hv.resize(n);
-    for (int j = 0; j < g.ny; ++j)
-    {
-        for (int i = 0; i < g.nx; ++i)
-        {
-            const int c = g.idx(i, j);
-            const std::size_t k = i + std::size_t(j)*g.nx;
-            h[k] = U_.h[c];
-            hu[k] = U_.hu[c];
-            hv[k] = U_.hv[c];
-        }
-    }
+    toInterior(model_.g, U_.h.data(), h);
+    toInterior(model_.g, U_.hu.data(), hu);
+    toInterior(model_.g, U_.hv.data(), hv);
 }
+
 
 template<class Real>
 void CpuSolver<Real>::getPeaks
@@ -240,53 +197,17 @@ void CpuSolver<Real>::getPeaks
     std::vector<Real>& speedPeak
 )
 {
-    const Grid<Real>& g = model_.g;
-    const std::size_t n = std::size_t(g.nx)*g.ny;
-    hPeak.resize(n);
-    speedPeak.resize(n);
-    for (int j = 0; j < g.ny; ++j)
-    {
-        for (int i = 0; i < g.nx; ++i)
-        {
-            const int c = g.idx(i, j);
-            const std::size_t k = i + std::size_t(j)*g.nx;
-            hPeak[k] = hPeak_[c];
-            speedPeak[k] = speedPeak_[c];
-        }
-    }
+    toInterior(model_.g, hPeak_.data(), hPeak);
+    toInterior(model_.g, speedPeak_.data(), speedPeak);
 }
 
 
 template<class Real>
 Diagnostics CpuSolver<Real>::diagnostics()
 {
-    const Grid<Real>& g = model_.g;
-    const Fields<Real> U = U_.view();
-    Diagnostics d;
-    double sumH = 0;
-    for (int j = 0; j < g.ny; ++j)
-    {
-        for (int i = 0; i < g.nx; ++i)
-        {
-            const int c = g.idx(i, j);
-            const Real h = U.h[c];
-            sumH += double(h);
-            d.hMax = std::max(d.hMax, double(h));
-            d.maxRate =
-                std::max(d.maxRate, double(cellWaveRate(model_, U, i, j)));
-            if (h > model_.p.hDry)
-            {
-                ++d.wetCells;
-                if (U.hu[c] != Real(0) || U.hv[c] != Real(0))
-                {
-                    ++d.movingCells;
-                }
-            }
-        }
-    }
-    d.volume = sumH*double(g.dx)*double(g.dy);
-    return d;
+    return diagnosticsOf(model_, U_.view());
 }
+
 
 template class CpuSolver<double>;
 template class CpuSolver<float>;

@@ -1,6 +1,6 @@
 #include "problem.H"
 #include "modelInput.H"
-#include "../physics/scheme.H"
+#include "padded.H"
 
 #include <cmath>
 #include <stdexcept>
@@ -160,33 +160,19 @@ template<class Real>
 HostPeaks<Real>::HostPeaks(const Problem<Real>& pb)
 {
     const Grid<Real>& g = pb.grid;
-    h.assign(g.size(), Real(0));
-    speed.assign(g.size(), Real(0));
-
-    // The initial state on the padded grid, as the backends hold it
-    std::vector<Real> sh(g.size(), Real(0)), shu(sh), shv(sh);
     const bool given = pb.hPeak.size() == std::size_t(pb.nCells())
                     && pb.speedPeak.size() == std::size_t(pb.nCells());
-    for (int j = 0; j < g.ny; ++j)
-    {
-        for (int i = 0; i < g.nx; ++i)
-        {
-            const int c = g.idx(i, j);
-            const int k = pb.cell(i, j);
-            sh[c] = pb.h[k];
-            shu[c] = pb.hu[k];
-            shv[c] = pb.hv[k];
-            if (given)
-            {
-                h[c] = pb.hPeak[k];
-                speed[c] = pb.speedPeak[k];
-            }
-        }
-    }
+    h = given ? toPadded(g, pb.hPeak) : std::vector<Real>(g.size(), Real(0));
+    speed =
+        given ? toPadded(g, pb.speedPeak) : std::vector<Real>(g.size(), Real(0));
+
+    // Raised to the initial state, as the backends hold it
+    std::vector<Real> q[3] =
+        {toPadded(g, pb.h), toPadded(g, pb.hu), toPadded(g, pb.hv)};
     Model<Real> m;
     m.p = pb.params;
     m.g = g;
-    const Fields<Real> U{sh.data(), shu.data(), shv.data()};
+    const Fields<Real> U{q[0].data(), q[1].data(), q[2].data()};
     for (int j = 0; j < g.ny; ++j)
     {
         for (int i = 0; i < g.nx; ++i)
