@@ -225,18 +225,10 @@ structuredMesh::structuredMesh(const fvMesh& mesh)
                 }
                 continue;
             }
-            label s = -1;
-            if (n.x() < -1 + lengthTol) { s = 0; }
-            else if (n.x() > 1 - lengthTol) { s = 1; }
-            else if (n.y() < -1 + lengthTol) { s = 2; }
-            else if (n.y() > 1 - lengthTol) { s = 3; }
-            if (s < 0)
-            {
-                FatalErrorInFunction
-                    << "Face " << facei << " of patch " << pp.name()
-                    << " has normal " << n << ", not along x, y or z."
-                    << nl << exit(FatalError);
-            }
+            // Along x or y: checked for every face above
+            const label s = mag(n.x()) > mag(n.y())
+                ? (n.x() < 0 ? 0 : 1)
+                : (n.y() < 0 ? 2 : 3);
             sides[s] = true;
         }
         for (label s = 0; s < 4; ++s)
