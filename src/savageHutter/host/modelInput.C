@@ -60,6 +60,89 @@ void requireFinite(const std::string& keyword, double x)
     }
 }
 
+void requireAngle(const std::string& keyword, double deg, const char* what)
+{
+    if (!(deg >= 0 && deg < 90))
+    {
+        throw InputError
+        (
+            keyword,
+            std::string(what) + " must lie in [0, 90) degrees, got " + str(deg)
+        );
+    }
+}
+
+void requirePositive(const std::string& keyword, double x, const char* what)
+{
+    if (!(x > 0))
+    {
+        throw InputError
+        (
+            keyword, std::string(what) + " must be positive, got " + str(x)
+        );
+    }
+}
+
+//- The coefficients of the selected law (only those: another law's
+//  defaults are not the user's input)
+void checkFrictionLaw(const ModelInput& in)
+{
+    switch (in.frictionLaw)
+    {
+        case FrictionLaw::Coulomb:
+            requireAngle("delta", in.deltaDeg, "basal friction angle");
+            break;
+
+        case FrictionLaw::PouliquenForterre:
+        {
+            const ModelInput::PouliquenForterreInput& pf =
+                in.pouliquenForterre;
+            requireAngle("zeta1", pf.zeta1Deg, "friction angle zeta1");
+            requireAngle("zeta2", pf.zeta2Deg, "friction angle zeta2");
+            requireAngle("zeta3", pf.zeta3Deg, "friction angle zeta3");
+            if (!(pf.zeta1Deg < pf.zeta2Deg))
+            {
+                throw InputError
+                (
+                    "zeta1",
+                    "zeta1 = " + str(pf.zeta1Deg) + " deg must be below"
+                    " zeta2 = " + str(pf.zeta2Deg) + " deg: mu_stop (eq. 40)"
+                    " falls from tan(zeta2) at h = 0 to tan(zeta1) in deep"
+                    " flows"
+                );
+            }
+            if (pf.zeta3Deg < pf.zeta1Deg)
+            {
+                throw InputError
+                (
+                    "zeta3",
+                    "zeta3 = " + str(pf.zeta3Deg) + " deg must not be below"
+                    " zeta1 = " + str(pf.zeta1Deg) + " deg: the static"
+                    " coefficient mu_start (eq. 41) would fall below the"
+                    " dynamic mu_stop (eq. 40) in deep layers"
+                );
+            }
+            requirePositive("L", pf.L, "length scale L");
+            requirePositive("beta", pf.beta, "Froude number coefficient beta");
+            requirePositive("gamma", pf.gamma, "exponent gamma");
+            break;
+        }
+
+        case FrictionLaw::Voellmy:
+            if (!(in.voellmy.mu >= 0))
+            {
+                throw InputError
+                (
+                    "mu",
+                    "friction coefficient mu must not be negative, got "
+                  + str(in.voellmy.mu)
+                );
+            }
+            requirePositive("xi", in.voellmy.xi, "turbulence coefficient xi");
+            break;
+    }
+}
+
 } // namespace
 
 
@@ -77,7 +160,10 @@ const std::vector<std::string>& earthPressureNames()
 
 const std::vector<std::string>& frictionLawNames()
 {
-    static const std::vector<std::string> n{"Coulomb"};
+    static const std::vector<std::string> n
+    {
+        "Coulomb", "PouliquenForterre", "Voellmy"
+    };
     return n;
 }
 
@@ -119,6 +205,15 @@ Params<Real> makeParams(const ModelInput& in)
     requireFinite("lambda", in.lambda);
     requireFinite("phi", in.phiDeg);
     requireFinite("delta", in.deltaDeg);
+    const ModelInput::PouliquenForterreInput& pf = in.pouliquenForterre;
+    requireFinite("zeta1", pf.zeta1Deg);
+    requireFinite("zeta2", pf.zeta2Deg);
+    requireFinite("zeta3", pf.zeta3Deg);
+    requireFinite("L", pf.L);
+    requireFinite("beta", pf.beta);
+    requireFinite("gamma", pf.gamma);
+    requireFinite("mu", in.voellmy.mu);
+    requireFinite("xi", in.voellmy.xi);
     requireFinite("hDry", in.hDry);
     requireFinite("maxCo", in.cfl);
 
@@ -142,30 +237,41 @@ Params<Real> makeParams(const ModelInput& in)
           + str(in.phiDeg)
         );
     }
-    if (!(in.deltaDeg >= 0 && in.deltaDeg < 90))
+    checkFrictionLaw(in);
+
+    // The basal friction angle of the active/passive coefficients
+    double deltaDeg = in.deltaDeg;
+    std::string deltaKeyword = "delta";
+    if (in.frictionLaw == FrictionLaw::Voellmy)
     {
-        throw InputError
-        (
-            "delta",
-            "basal friction angle must lie in [0, 90) degrees, got "
-          + str(in.deltaDeg)
-        );
+        deltaDeg = std::atan(in.voellmy.mu)/degToRad;
+        deltaKeyword = "mu";
     }
-    if
-    (
-        in.earthPressure == EarthPressureModel::activePassive
-     && in.deltaDeg > in.phiDeg
-    )
+    if (in.earthPressure == EarthPressureModel::activePassive)
     {
-        throw InputError
-        (
-            "delta",
-            "basal friction angle delta = " + str(in.deltaDeg)
-          + " deg exceeds the internal friction angle phi = "
-          + str(in.phiDeg) + " deg: the active/passive earth pressure"
-            " coefficients (eqs 7-8) are then complex. Use delta <= phi,"
-            " or earthPressure isotropic"
-        );
+        if (in.frictionLaw == FrictionLaw::PouliquenForterre)
+        {
+            throw InputError
+            (
+                "earthPressure",
+                "activePassive needs one basal friction angle (eqs 7-8),"
+                " which frictionModel PouliquenForterre does not have (its"
+                " mu varies with h and Fr). Use earthPressure isotropic"
+                " (K = 1, as Johnson & Gray 2011 and Zhai et al. 2014 do)"
+            );
+        }
+        if (deltaDeg > in.phiDeg)
+        {
+            throw InputError
+            (
+                deltaKeyword,
+                "basal friction angle delta = " + str(deltaDeg)
+              + " deg exceeds the internal friction angle phi = "
+              + str(in.phiDeg) + " deg: the active/passive earth pressure"
+                " coefficients (eqs 7-8) are then complex. Use delta <= phi,"
+                " or earthPressure isotropic"
+            );
+        }
     }
     if (in.hDry <= 0)
     {
@@ -183,7 +289,7 @@ Params<Real> makeParams(const ModelInput& in)
     }
 
     const double phi = in.phiDeg*degToRad;
-    const double delta = in.deltaDeg*degToRad;
+    const double delta = deltaDeg*degToRad;
 
     Params<Real> p;
     p.g = Real(in.g);
@@ -206,8 +312,23 @@ Params<Real> makeParams(const ModelInput& in)
     p.K.kxMax = Real(K.kxMax);
     p.K.kyMax = Real(K.kyMax);
 
+    p.friction = FrictionParams<Real>();
     p.friction.law = in.frictionLaw;
-    p.friction.tanDelta = Real(std::tan(delta));
+    p.friction.coulomb.tanDelta = Real(std::tan(in.deltaDeg*degToRad));
+    {
+        PouliquenForterreParams<Real>& f = p.friction.pouliquenForterre;
+        const double t1 = std::tan(pf.zeta1Deg*degToRad);
+        f.tanZeta1 = Real(t1);
+        f.tanZeta3 = Real(std::tan(pf.zeta3Deg*degToRad));
+        f.dTan = Real(std::tan(pf.zeta2Deg*degToRad) - t1);
+        f.L = Real(pf.L);
+        f.beta = Real(pf.beta);
+        f.gamma = Real(pf.gamma);
+        f.epsG = Real(in.epsilon*in.g);
+    }
+    p.friction.voellmy.mu = Real(in.voellmy.mu);
+    p.friction.voellmy.gOverXi = Real(in.g/in.voellmy.xi);
+    p.jet = JetParams<Real>();
     p.limiter = in.limiter;
     p.stoppingCriterion = in.stoppingCriterion;
     p.staticResistance = in.staticResistance;

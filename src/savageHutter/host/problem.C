@@ -66,6 +66,110 @@ void Problem<Real>::setInclination(const std::function<double(double)>& z)
 
 
 template<class Real>
+void Problem<Real>::setImpingingJet(const JetInput& in)
+{
+    const auto num = [](double x) { return std::to_string(x); };
+    if (!(std::isfinite(in.xc) && std::isfinite(in.yc)))
+    {
+        throw InputError("centre", "must be finite");
+    }
+    if (!(in.R > 0 && std::isfinite(in.R)))
+    {
+        throw InputError("R", "jet radius must be positive, got " + num(in.R));
+    }
+    if (!(in.rImp > 0 && std::isfinite(in.rImp)))
+    {
+        throw InputError
+        (
+            "R_imp",
+            "radius of the imposed region must be positive, got "
+          + num(in.rImp)
+        );
+    }
+    if (!(in.uJet >= 0 && std::isfinite(in.uJet)))
+    {
+        throw InputError
+        (
+            "u_jet", "jet speed must not be negative, got " + num(in.uJet)
+        );
+    }
+    const double x0 = grid.x0;
+    const double y0 = grid.y0;
+    const double x1 = x0 + grid.nx*double(grid.dx);
+    const double y1 = y0 + grid.ny*double(grid.dy);
+    if (!(in.xc >= x0 && in.xc <= x1 && in.yc >= y0 && in.yc <= y1))
+    {
+        throw InputError
+        (
+            "centre",
+            "stagnation point (" + num(in.xc) + " " + num(in.yc)
+          + ") lies outside the mesh [" + num(x0) + ", " + num(x1) + "] x ["
+          + num(y0) + ", " + num(y1) + "]"
+        );
+    }
+
+    JetParams<Real> j;
+    j.on = 1;
+    j.xc = Real(in.xc);
+    j.yc = Real(in.yc);
+    j.rImp2 = Real(in.rImp*in.rImp);
+    const double cz = std::cos(in.zeta);
+    j.hCoeff = Real(0.5*in.R*in.R*cz*cz*cz);
+    j.sinZeta = Real(std::sin(in.zeta));
+    j.uJet = Real(in.uJet);
+    const auto clampI = [](double v, int n)
+    {
+        return v < 0 ? 0 : (v > n - 1 ? n - 1 : int(v));
+    };
+    j.iMin = clampI(std::floor((in.xc - in.rImp - x0)/grid.dx) - 1, grid.nx);
+    j.iMax = clampI(std::ceil((in.xc + in.rImp - x0)/grid.dx) + 1, grid.nx);
+    j.jMin = clampI(std::floor((in.yc - in.rImp - y0)/grid.dy) - 1, grid.ny);
+    j.jMax = clampI(std::ceil((in.yc + in.rImp - y0)/grid.dy) + 1, grid.ny);
+
+    // The state the backends will impose, computed by the same function
+    int inside = 0;
+    for (int jj = j.jMin; jj <= j.jMax; ++jj)
+    {
+        for (int i = j.iMin; i <= j.iMax; ++i)
+        {
+            State<Real> q;
+            if (!jetState(j, grid, i, jj, q))
+            {
+                continue;
+            }
+            if (!(std::isfinite(double(q.h)) && std::isfinite(double(q.hu))))
+            {
+                throw InputError
+                (
+                    "centre",
+                    "stagnation point (" + num(in.xc) + " " + num(in.yc)
+                  + ") lies on the centre of cell (" + std::to_string(i)
+                  + ", " + std::to_string(jj) + "), where h of eq. (38) is"
+                    " infinite; move it off the cell centres, e.g. onto a"
+                    " mesh point"
+                );
+            }
+            const int c = cell(i, jj);
+            h[c] = q.h;
+            hu[c] = q.hu;
+            hv[c] = q.hv;
+            ++inside;
+        }
+    }
+    if (inside == 0)
+    {
+        throw InputError
+        (
+            "R_imp",
+            "no cell centre lies within R_imp = " + num(in.rImp)
+          + " of the stagnation point: refine the mesh or enlarge R_imp"
+        );
+    }
+    params.jet = j;
+}
+
+
+template<class Real>
 void Problem<Real>::setTopography(const std::function<double(double, double)>& f)
 {
     for (int j = 0; j < grid.ny; ++j)

@@ -1,0 +1,336 @@
+/*---------------------------------------------------------------------------*\
+  The friction laws (physics/frictionLaws): the portable exp/log/pow they
+  use, each law against hand-computed values, the rejection of bad
+  coefficients, and uniform layers on an incline against their exact steady
+  states:
+
+    Pouliquen-Forterre (Zhai et al. 2014 eqs 39-43): a layer of depth
+      h > h_stop(zeta) relaxes to the speed |v| = Fr sqrt(eps g h cos zeta)
+      with Fr = beta h/h_stop, h_stop = -L ln((tan zeta - tan zeta1)/
+      (tan zeta2 - tan zeta1)); a layer below h_stop at rest stays at rest,
+      and one set moving stops; between h_stop and h_start (where
+      mu_start(h_start) = tan zeta) a layer at rest holds while a moving
+      one keeps flowing: the hysteresis.
+    Voellmy: g sin zeta = mu g cos zeta + g |v|^2/(xi h), so
+      |v| = sqrt(xi h (sin zeta - mu cos zeta)).
+
+  A uniform layer with transmissive sides stays uniform (every face flux is
+  the same), so these are the law's own ODE, integrated by the scheme.
+  Hand-computed values: Python, double precision, from the printed
+  equations (15 significant digits).
+\*---------------------------------------------------------------------------*/
+
+#include "testing.H"
+#include "physics/portableMath.H"
+
+#include <functional>
+#include <limits>
+
+using namespace sh;
+using namespace shtest;
+
+namespace
+{
+
+constexpr double ulp = 2.220446049250313e-16;
+
+bool relClose(double a, double b, double tol)
+{
+    return std::fabs(a - b) <= tol*std::fabs(b);
+}
+
+void portableMath(Counter& t)
+{
+    std::printf("\nPortable exp, log, pow against the C library (max error in ulp)\n");
+    double eExp = 0, eLog = 0, ePow = 0;
+    for (int k = -4000; k <= 4000; ++k)
+    {
+        const double x = k*0.0173;            // [-69.2, 69.2]
+        eExp = std::max(eExp, std::fabs(shExp(x) - std::exp(x))/std::exp(x));
+        const double y = std::exp(k*0.011) + 1e-3*k*k;
+        eLog = std::max
+        (
+            eLog,
+            std::fabs(shLog(y) - std::log(y))
+           /std::max(std::fabs(std::log(y)), 1e-300)
+        );
+        const double b = 1e-6 + std::fabs(k)*1e-3;
+        for (const double p : {1e-3, 0.5, 2.7})
+        {
+            ePow = std::max
+            (
+                ePow, std::fabs(shPow(b, p) - std::pow(b, p))/std::pow(b, p)
+            );
+        }
+    }
+    std::printf("  exp %.2f  log %.2f  pow %.2f\n", eExp/ulp, eLog/ulp, ePow/ulp);
+    t.check(eExp < 4*ulp, "exp within 4 ulp on [-69, 69]");
+    t.check(eLog < 4*ulp, "log within 4 ulp on [1e-19, 1e19]");
+    t.check(ePow < 8*ulp, "pow within 8 ulp");
+    t.check
+    (
+        shExp(-800.0) == 0 && shPow(0.0, 1e-3) == 0 && shPow(0.0, 0.0) == 1
+     && shLog(1.0) == 0 && std::isnan(shLog(-1.0)),
+        "limits: exp(-800) = 0, 0^0.001 = 0, 0^0 = 1, log 1 = 0, log(-1) NaN"
+    );
+    float ef = 0;
+    for (int k = -800; k <= 800; ++k)
+    {
+        const float x = float(k)*0.0173f;
+        ef = std::max(ef, std::fabs(shExp(x) - std::exp(x))/std::exp(x));
+    }
+    std::printf("  float exp: %.2f float ulp\n", ef/1.1920929e-7f);
+    t.check(ef < 4*1.1920929e-7f, "float exp within 4 float ulp");
+}
+
+
+ModelInput pfInput()
+{
+    ModelInput in;
+    in.g = 9.81;
+    in.earthPressure = EarthPressureModel::isotropic;
+    in.phiDeg = 35;
+    in.frictionLaw = FrictionLaw::PouliquenForterre;
+    return in;                  // coefficients: the paper's (modelInput.H)
+}
+
+void handValues(Counter& t)
+{
+    std::printf("\nEach law against hand-computed values (zeta = 26.7 deg, g = 9.81)\n");
+    const double cz = std::cos(26.7*deg);
+    const Params<double> p = makeParams<double>(pfInput());
+    const FrictionParams<double>& f = p.friction;
+
+    struct Row { double h, speed, mu; const char* what; };
+    const Row rows[] =
+    {
+        {0.01, 0.2, 0.533931275784013, "Fr = 0.676 >= beta: mu_stop(h beta/Fr), eq. 42"},
+        {0.005, 0.01, 0.475132612190783, "Fr = 0.0478 < beta: eq. 43"},
+        {0.004, 1e-6, 0.492054433950500, "Fr = 5.3e-6: eq. 43, near mu_stop"},
+        {0.005, 0.0, 0.522579266900671, "Fr = 0: mu_start(h), eq. 41"},
+        {0.0, 0.3, 0.617984955319308, "h = 0: mu_start(0)"},
+    };
+    std::printf("  %8s %8s %18s %18s\n", "h [m]", "|v|", "mu", "hand");
+    for (const Row& r : rows)
+    {
+        const double mu = frictionCoefficient(f, {r.h, r.speed, cz});
+        std::printf("  %8g %8g %18.15f %18.15f\n", r.h, r.speed, mu, r.mu);
+        t.check(relClose(mu, r.mu, 1e-13), std::string("PouliquenForterre ") + r.what);
+    }
+    t.check
+    (
+        relClose(staticFrictionCoefficient(f, 0.01), 0.486802133743683, 1e-13)
+     && relClose(muStop(f.pouliquenForterre, 0.01), 0.423507610246661, 1e-13),
+        "mu_start(0.01) = 0.48680213374368, mu_stop(0.01) = 0.42350761024666"
+    );
+
+    // Continuity at Fr = beta: both branches give mu_stop(h)
+    const double h = 0.007;
+    const double c = std::sqrt(9.81*h*cz);
+    const double below = frictionCoefficient(f, {h, 0.136*c*(1 - 1e-12), cz});
+    const double above = frictionCoefficient(f, {h, 0.136*c, cz});
+    std::printf("  at Fr = beta: %.15f (below) %.15f (at)\n", below, above);
+    t.check(relClose(below, above, 1e-12), "mu continuous at Fr = beta");
+
+    ModelInput co;
+    co.deltaDeg = 24.5;
+    const Params<double> pc = makeParams<double>(co);
+    t.check
+    (
+        relClose(frictionCoefficient(pc.friction, {0.3, 2.0, cz}), 0.455726255532585, 1e-14)
+     && frictionDrag(pc.friction, 2.0) == 0,
+        "Coulomb: mu = tan(24.5 deg) = 0.455726255532585, no drag"
+    );
+
+    ModelInput vo;
+    vo.frictionLaw = FrictionLaw::Voellmy;
+    vo.voellmy.mu = 0.2;
+    vo.voellmy.xi = 500;
+    const Params<double> pv = makeParams<double>(vo);
+    t.check
+    (
+        frictionCoefficient(pv.friction, {0.3, 2.0, cz}) == 0.2
+     && staticFrictionCoefficient(pv.friction, 0.3) == 0.2
+     && relClose(frictionDrag(pv.friction, 2.0), 9.81*4/500, 1e-15),
+        "Voellmy: mu = 0.2, drag g|v|^2/xi = 0.07848 at 2 m/s"
+    );
+}
+
+
+void rejects
+(
+    Counter& t,
+    const char* what,
+    const std::function<void(ModelInput&)>& edit,
+    const std::string& keyword
+)
+{
+    ModelInput in = pfInput();
+    edit(in);
+    try
+    {
+        makeParams<double>(in);
+        t.check(false, std::string(what) + " rejected");
+    }
+    catch (const InputError& e)
+    {
+        std::printf("    %s\n", e.what());
+        t.check(e.keyword() == keyword, std::string(what) + " rejected, naming " + keyword);
+    }
+}
+
+void badCoefficients(Counter& t)
+{
+    std::printf("\nBad coefficients are rejected\n");
+    typedef ModelInput M;
+    rejects(t, "L < 0", [](M& in) { in.pouliquenForterre.L = -6e-3; }, "L");
+    rejects(t, "L = 0", [](M& in) { in.pouliquenForterre.L = 0; }, "L");
+    rejects(t, "zeta1 > zeta2", [](M& in) { in.pouliquenForterre.zeta1Deg = 32; }, "zeta1");
+    rejects(t, "zeta1 = zeta2", [](M& in) { in.pouliquenForterre.zeta1Deg = 30.7; }, "zeta1");
+    rejects(t, "zeta3 < zeta1", [](M& in) { in.pouliquenForterre.zeta3Deg = 20; }, "zeta3");
+    rejects(t, "zeta2 = 90", [](M& in) { in.pouliquenForterre.zeta2Deg = 90; }, "zeta2");
+    rejects(t, "zeta1 < 0", [](M& in) { in.pouliquenForterre.zeta1Deg = -1; }, "zeta1");
+    rejects(t, "beta = 0", [](M& in) { in.pouliquenForterre.beta = 0; }, "beta");
+    rejects(t, "gamma < 0", [](M& in) { in.pouliquenForterre.gamma = -1e-3; }, "gamma");
+    rejects(t, "L NaN", [](M& in) { in.pouliquenForterre.L = std::nan(""); }, "L");
+    rejects(t, "PouliquenForterre with activePassive K",
+        [](M& in) { in.earthPressure = EarthPressureModel::activePassive; }, "earthPressure");
+    rejects(t, "Voellmy xi = 0",
+        [](M& in) { in.frictionLaw = FrictionLaw::Voellmy; in.voellmy.xi = 0; }, "xi");
+    rejects(t, "Voellmy mu < 0",
+        [](M& in) { in.frictionLaw = FrictionLaw::Voellmy; in.voellmy.mu = -0.1; }, "mu");
+    rejects(t, "Voellmy atan(mu) > phi with activePassive", [](M& in)
+    {
+        in.frictionLaw = FrictionLaw::Voellmy;
+        in.voellmy.mu = 0.8;
+        in.earthPressure = EarthPressureModel::activePassive;
+    }, "mu");
+
+    // Another law's coefficients are not checked: they are not the input
+    ModelInput in = pfInput();
+    in.deltaDeg = -5;
+    bool ok = true;
+    try { makeParams<double>(in); } catch (const InputError&) { ok = false; }
+    t.check(ok, "PouliquenForterre ignores Coulomb's delta");
+
+    try
+    {
+        parseFrictionLaw("Manning");
+        t.check(false, "unknown friction law rejected");
+    }
+    catch (const InputError& e)
+    {
+        std::printf("    %s\n", e.what());
+        t.check
+        (
+            std::string(e.what()).find("Coulomb PouliquenForterre Voellmy")
+         != std::string::npos,
+            "unknown friction law rejected, listing the valid ones"
+        );
+    }
+}
+
+
+//- A uniform layer of depth h0 and speed u0 on an incline zetaDeg, 4x4
+//  cells with transmissive sides, integrated to tEnd with dt <= 1e-3
+struct Layer
+{
+    double u;
+    double v;
+    double hChange;
+    bool atRest;
+    bool uniform;
+};
+
+Layer uniformLayer(const ModelInput& in, double zetaDeg, double h0, double u0, double tEnd)
+{
+    Problem<double> pb(makeParams<double>(in), 4, 4, 0, 1, 0, 1);
+    pb.setInclination([&](double) { return zetaDeg*deg; });
+    pb.setState([&](double, double) { return Primitive{h0, u0, 0}; });
+    CpuSolver<double> s(pb, false);
+    s.setMaxDt(1e-3);
+    s.advanceTo(tEnd);
+    std::vector<double> h, hu, hv;
+    s.getState(h, hu, hv);
+    Layer r{hu[5]/h[5], hv[5]/h[5], std::fabs(h[5] - h0), true, true};
+    for (std::size_t c = 0; c < h.size(); ++c)
+    {
+        r.atRest = r.atRest && hu[c] == 0 && hv[c] == 0;
+        r.uniform = r.uniform && h[c] == h[5] && hu[c] == hu[5] && hv[c] == hv[5];
+    }
+    return r;
+}
+
+void pouliquenForterreLayers(Counter& t)
+{
+    std::printf("\nPouliquen-Forterre: uniform layers on a 26.7 deg incline\n");
+    const ModelInput in = pfInput();
+    const double zeta = 26.7*deg;
+    const double t1 = std::tan(21*deg), t2 = std::tan(30.7*deg), t3 = std::tan(22.2*deg);
+    const double L = 6e-3, beta = 0.136;
+    const double hStop = -L*std::log((std::tan(zeta) - t1)/(t2 - t1));
+    const double hStart = L*((t2 - t1)/(std::tan(zeta) - t3) - 1);
+    std::printf("  h_stop = %.6f m, h_start = %.6f m\n", hStop, hStart);
+
+    std::printf("  %8s %8s %6s %14s %14s %10s\n", "h [m]", "u0", "t", "u", "exact", "rel. err");
+    for (const double h0 : {0.01, 0.02, 0.005})
+    {
+        const double u0 = h0 < hStart ? 0.1 : 0.0;
+        const double exact = beta*h0/hStop*std::sqrt(9.81*h0*std::cos(zeta));
+        // Relaxation time 1/(g cos zeta dmu/du), dmu/du = (tan zeta -
+        // tan zeta1) h_stop/(L u): 0.2 s (h = 1 cm) to 0.6 s (2 cm)
+        const Layer r = uniformLayer(in, 26.7, h0, u0, 20.0);
+        const double err = std::fabs(r.u - exact)/exact;
+        std::printf("  %8g %8g %6g %14.10f %14.10f %10.2e\n", h0, u0, 20.0, r.u, exact, err);
+        t.check
+        (
+            err < 1e-8 && r.v == 0 && r.hChange == 0 && r.uniform,
+            fmt("h = %g m relaxes to the steady speed beta h/h_stop sqrt(g h cos zeta) (rel. 1e-8)", h0)
+        );
+    }
+
+    const Layer below = uniformLayer(in, 26.7, 0.002, 0.0, 2.0);
+    t.check(below.atRest && below.uniform, "h = 2 mm < h_stop at rest stays exactly at rest");
+    const Layer stops = uniformLayer(in, 26.7, 0.002, 0.05, 2.0);
+    std::printf("  h = 2 mm set moving at 0.05 m/s: u = %g after 2 s\n", stops.u);
+    t.check(stops.atRest, "h = 2 mm < h_stop set moving comes to rest");
+    const Layer holds = uniformLayer(in, 26.7, 0.005, 0.0, 2.0);
+    t.check(holds.atRest, "h = 5 mm (h_stop < h < h_start) at rest holds: hysteresis");
+    const Layer starts = uniformLayer(in, 26.7, 0.008, 0.0, 0.05);
+    t.check(!starts.atRest && starts.u > 0, "h = 8 mm > h_start at rest starts to flow");
+}
+
+void voellmyLayer(Counter& t)
+{
+    std::printf("\nVoellmy: uniform layer on a 35 deg incline, mu = 0.3, xi = 500\n");
+    ModelInput in;
+    in.g = 9.81;
+    in.earthPressure = EarthPressureModel::isotropic;
+    in.frictionLaw = FrictionLaw::Voellmy;
+    in.voellmy.mu = 0.3;
+    in.voellmy.xi = 500;
+    const double zeta = 35*deg;
+    const double h0 = 0.5;
+    const double exact = std::sqrt(500*h0*(std::sin(zeta) - 0.3*std::cos(zeta)));
+    // Relaxation time xi h/(2 g u) ~ 1.4 s
+    const Layer r = uniformLayer(in, 35, h0, 0.0, 60.0);
+    const double err = std::fabs(r.u - exact)/exact;
+    std::printf("  u = %.10f, exact %.10f, rel. err %.2e\n", r.u, exact, err);
+    t.check(err < 1e-8 && r.uniform, "relaxes to sqrt(xi h (sin zeta - mu cos zeta)) (rel. 1e-8)");
+    const Layer rest = uniformLayer(in, 15, h0, 0.0, 1.0);
+    t.check(rest.atRest, "tan(15 deg) < mu: stays at rest");
+}
+
+} // namespace
+
+
+int main()
+{
+    Counter t;
+    portableMath(t);
+    handValues(t);
+    badCoefficients(t);
+    pouliquenForterreLayers(t);
+    voellmyLayer(t);
+    return t.finish();
+}
