@@ -1,7 +1,8 @@
 /*---------------------------------------------------------------------------*\
   GPU against CPU: the CUDA backend must reproduce the CPU backend
 
-    Usage: gpuCompare damBreak|collapsingPile|inclinedPlane|inflowPlane
+    Usage: gpuCompare damBreak|collapsingPile|inclinedPlane|inflowPlane|
+                      granularJet|voellmyPile
 
     Runs the case on the CPU backend (OpenMP) and on the CUDA backend, in
     double and in float, and compares the states at several output times.
@@ -395,7 +396,20 @@ int main(int argc, char** argv)
         return run([](auto r) { return shcases::inflowPlane<decltype(r)>(2); },
             {3, 6, 12}, false, 2);
     }
-    std::fprintf(stderr, "usage: gpuCompare "
-        "damBreak|collapsingPile|inclinedPlane|inflowPlane\n");
+    if (which == "granularJet")
+    {
+        std::printf("Granular jet, section 5.4, Pouliquen-Forterre friction, "
+            "128x64, t = 0.5 s\n");
+        return run([](auto r) { return shcases::granularJet<decltype(r)>(128); },
+            {0.1, 0.25, 0.5}, false, 3);
+    }
+    if (which == "voellmyPile")
+    {
+        std::printf("Collapsing pile with Voellmy friction, 64x64, t = 2 s\n");
+        return run([](auto r) { return shcases::voellmyPile<decltype(r)>(64); },
+            {0.5, 1, 2}, false, 0);
+    }
+    std::fprintf(stderr, "usage: gpuCompare damBreak|collapsingPile|"
+        "inclinedPlane|inflowPlane|granularJet|voellmyPile\n");
     return 2;
 }

@@ -3,6 +3,7 @@
 #include "padded.H"
 
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 namespace sh
@@ -68,7 +69,12 @@ void Problem<Real>::setInclination(const std::function<double(double)>& z)
 template<class Real>
 void Problem<Real>::setImpingingJet(const JetInput& in)
 {
-    const auto num = [](double x) { return std::to_string(x); };
+    const auto num = [](double x)
+    {
+        std::ostringstream os;
+        os << x;
+        return os.str();
+    };
     if (!(std::isfinite(in.xc) && std::isfinite(in.yc)))
     {
         throw InputError("centre", "must be finite");
@@ -126,6 +132,24 @@ void Problem<Real>::setImpingingJet(const JetInput& in)
     j.jMin = clampI(std::floor((in.yc - in.rImp - y0)/grid.dy) - 1, grid.ny);
     j.jMax = clampI(std::ceil((in.yc + in.rImp - y0)/grid.dy) + 1, grid.ny);
 
+    // h of eq. (38) grows as 1/r: a cell centre next to the stagnation
+    // point would get an arbitrarily thick, fast cell
+    const double iNear = std::floor((in.xc - x0)/grid.dx);
+    const double jNear = std::floor((in.yc - y0)/grid.dy);
+    const double dxNear = std::fabs(in.xc - (x0 + (iNear + 0.5)*grid.dx));
+    const double dyNear = std::fabs(in.yc - (y0 + (jNear + 0.5)*grid.dy));
+    if (std::hypot(dxNear, dyNear) < 0.25*std::min(double(grid.dx), double(grid.dy)))
+    {
+        throw InputError
+        (
+            "centre",
+            "stagnation point (" + num(in.xc) + " " + num(in.yc)
+          + ") lies within a quarter cell of the centre of cell ("
+          + num(iNear) + ", " + num(jNear) + "), where h of eq. (38), which"
+            " grows as 1/r, is unbounded; put it on a mesh point or a face"
+        );
+    }
+
     // The state the backends will impose, computed by the same function
     int inside = 0;
     for (int jj = j.jMin; jj <= j.jMax; ++jj)
@@ -142,11 +166,9 @@ void Problem<Real>::setImpingingJet(const JetInput& in)
                 throw InputError
                 (
                     "centre",
-                    "stagnation point (" + num(in.xc) + " " + num(in.yc)
-                  + ") lies on the centre of cell (" + std::to_string(i)
-                  + ", " + std::to_string(jj) + "), where h of eq. (38) is"
-                    " infinite; move it off the cell centres, e.g. onto a"
-                    " mesh point"
+                    "h of eq. (38) overflows in cell (" + std::to_string(i)
+                  + ", " + std::to_string(jj) + ") next to the stagnation"
+                    " point (" + num(in.xc) + " " + num(in.yc) + ")"
                 );
             }
             const int c = cell(i, jj);
