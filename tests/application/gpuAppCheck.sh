@@ -68,7 +68,10 @@ prepare()
         done
         runApplication blockMesh
         restore0Dir
-        runApplication setAvalancheFields
+        if [ -f system/setAvalancheFieldsDict ]
+        then
+            runApplication setAvalancheFields
+        fi
     )
 }
 
@@ -213,6 +216,12 @@ compare collapsingPile single
 prepare inclinedPlane inclinedPlane 480 224 24 6
 compare inclinedPlane double
 compare inclinedPlane single
+
+# Pouliquen-Forterre friction and the impinging jet (portable exp/pow)
+prepare granularJet granularJet 512 256 2 0.5 \
+    system/fvSolution savageHutter/steadyStateTolerance 0
+compare granularJet double
+compare granularJet single
 
 echo
 [ $status -eq 0 ] && echo "gpuAppCheck: OK" || echo "gpuAppCheck: FAILED"

@@ -4,6 +4,7 @@
 
 #include "caseInput.H"
 #include "Switch.H"
+#include "unitConversion.H"
 
 #include <cstdlib>
 
@@ -46,7 +47,8 @@ word readChoice
 
 const wordList solverKeywords
 ({
-    "limiter", "stoppingCriterion", "staticResistance", "hDry", "holdResting"
+    "limiter", "stoppingCriterion", "staticResistance", "hDry", "holdResting",
+    "steadyStateTolerance"
 });
 
 const wordList transportKeywords
@@ -73,6 +75,9 @@ caseInput::caseInput(const fvMesh& mesh)
         )
     ),
     solverDict_(mesh.solutionDict().subDict("savageHutter")),
+    jetDict_(nullptr),
+    hasJet(false),
+    steadyStateTolerance(0),
     adjustTimeStep(false),
     deltaT(0),
     maxDeltaT(GREAT),
@@ -117,11 +122,8 @@ caseInput::caseInput(const fvMesh& mesh)
     );
     model.phiDeg = tp.get<scalar>("phi");
 
-    const word friction =
-        readChoice(tp, "frictionModel", sh::frictionLawNames());
-    model.frictionLaw = sh::parseFrictionLaw(friction);
-    const dictionary& coeffs = tp.subDict(friction + "Coeffs");
-    model.deltaDeg = coeffs.get<scalar>("delta");
+    friction_ = frictionModel::New(tp);
+    friction_->set(model);
 
     Info<< "    g             " << model.g << nl
         << "    epsilon       " << model.epsilon << nl
@@ -130,8 +132,10 @@ caseInput::caseInput(const fvMesh& mesh)
         << "    earthPressure "
         << sh::toString(model.earthPressure).c_str() << nl
         << "    phi           " << model.phiDeg << " deg" << nl
-        << "    frictionModel " << friction << " { delta "
-        << model.deltaDeg << " deg }" << nl;
+        << "    frictionModel " << friction_->type() << " { "
+        << friction_->summary().c_str() << " }" << nl;
+
+    readSources();
 
     // fvSolution::savageHutter: a misspelt keyword must not fall back
     Info<< "Reading fvSolution::savageHutter" << nl;
@@ -155,6 +159,14 @@ caseInput::caseInput(const fvMesh& mesh)
         solverDict_.getOrDefault<Switch>("staticResistance", true);
     model.holdResting = solverDict_.getOrDefault<Switch>("holdResting", true);
     model.hDry = solverDict_.getOrDefault<scalar>("hDry", 1e-6);
+    steadyStateTolerance =
+        solverDict_.getOrDefault<scalar>("steadyStateTolerance", 0);
+    if (!(steadyStateTolerance >= 0))
+    {
+        FatalIOErrorInFunction(solverDict_)
+            << "steadyStateTolerance must not be negative (0: off), got "
+            << steadyStateTolerance << nl << exit(FatalIOError);
+    }
 
     auto onOff = [](const bool b) { return b ? "on" : "off"; };
     Info<< "    limiter           " << sh::toString(model.limiter).c_str()
@@ -162,7 +174,9 @@ caseInput::caseInput(const fvMesh& mesh)
         << "    stoppingCriterion " << onOff(model.stoppingCriterion) << nl
         << "    staticResistance  " << onOff(model.staticResistance) << nl
         << "    holdResting       " << onOff(model.holdResting) << nl
-        << "    hDry              " << model.hDry << nl;
+        << "    hDry              " << model.hDry << nl
+        << "    steadyStateTolerance " << steadyStateTolerance
+        << (steadyStateTolerance > 0 ? " m/s (max |dh/dt|)" : " (off)") << nl;
 
     // controlDict: the CFL number of eq. (24) and the output times
     const dictionary& cd = mesh.time().controlDict();
@@ -227,14 +241,107 @@ caseInput::caseInput(const fvMesh& mesh)
 }
 
 
+void caseInput::readSources()
+{
+    const Time& runTime = mesh_.time();
+    IOobject inSystem
+    (
+        "fvOptions", runTime.system(), mesh_,
+        IOobject::MUST_READ, IOobject::NO_WRITE
+    );
+    IOobject inConstant
+    (
+        "fvOptions", runTime.constant(), mesh_,
+        IOobject::MUST_READ, IOobject::NO_WRITE
+    );
+    const bool sys = inSystem.typeHeaderOk<IOdictionary>(true);
+    const bool con = inConstant.typeHeaderOk<IOdictionary>(true);
+    if (sys && con)
+    {
+        FatalErrorInFunction
+            << "Both system/fvOptions and constant/fvOptions exist: keep one"
+            << nl << exit(FatalError);
+    }
+    if (!sys && !con)
+    {
+        return;
+    }
+    fvOptions_.reset(new IOdictionary(sys ? inSystem : inConstant));
+    const dictionary& opts = fvOptions_();
+    Info<< "Reading " << opts.name() << nl;
+
+    const wordList validTypes({"impingingJet"});
+    const wordList jetKeywords({"centre", "R", "R_imp", "u_jet"});
+    for (const entry& e : opts)
+    {
+        if (!e.isDict())
+        {
+            continue;                   // FoamFile header and the like
+        }
+        const dictionary& src = e.dict();
+        const word type = src.get<word>("type");
+        if (!validTypes.found(type))
+        {
+            FatalIOErrorInFunction(src)
+                << "Unknown source type '" << type << "' of "
+                << e.keyword() << "." << nl
+                << "Valid types: " << flatOutput(validTypes) << nl
+                << exit(FatalIOError);
+        }
+        if (!src.getOrDefault<Switch>("active", true))
+        {
+            Info<< "    " << e.keyword() << ": " << type << ", inactive" << nl;
+            continue;
+        }
+        if (jetDict_)
+        {
+            FatalIOErrorInFunction(src)
+                << "More than one active impingingJet: " << e.keyword()
+                << " and " << jetDict_->dictName() << nl
+                << exit(FatalIOError);
+        }
+        // As fvOptions: coefficients in <type>Coeffs or in the entry
+        const dictionary& c = src.optionalSubDict(type + "Coeffs");
+        for (const word& key : c.toc())
+        {
+            const bool own =
+                jetKeywords.found(key)
+             || (&c == &src
+              && (key == "type" || key == "active" || key == "selectionMode"));
+            if (!own && !(key == type + "Coeffs"))
+            {
+                FatalIOErrorInFunction(c)
+                    << "Unknown keyword '" << key << "' of " << type << "."
+                    << nl << "Valid keywords: " << flatOutput(jetKeywords)
+                    << nl << exit(FatalIOError);
+            }
+        }
+        jetDict_ = &c;
+        const vector centre = c.get<vector>("centre");
+        jet.xc = centre.x();
+        jet.yc = centre.y();
+        jet.R = c.get<scalar>("R");
+        jet.rImp = c.get<scalar>("R_imp");
+        jet.uJet = c.get<scalar>("u_jet");
+        jet.zeta = degToRad(inclination->value(jet.xc));
+        hasJet = true;
+        Info<< "    " << e.keyword() << ": impingingJet at " << centre
+            << ", R " << jet.R << ", R_imp " << jet.rImp << ", u_jet "
+            << jet.uJet << ", zeta " << radToDeg(jet.zeta) << " deg" << nl;
+    }
+}
+
+
 const dictionary& caseInput::dictOf(const std::string& keyword) const
 {
-    if (keyword == "delta")
+    if (friction_.valid() && friction_->owns(keyword))
     {
-        return transportProperties_.subDict
-        (
-            sh::toString(model.frictionLaw) + "Coeffs"
-        );
+        return friction_->coeffs();
+    }
+    if (jetDict_ && (keyword == "centre" || keyword == "R"
+     || keyword == "R_imp" || keyword == "u_jet"))
+    {
+        return *jetDict_;
     }
     if (solverKeywords.found(word(keyword)))
     {

@@ -29,6 +29,7 @@ Usage
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
+#include "OFstream.H"
 #include "structuredMesh.H"
 #include "boundaryConditions.H"
 #include "caseInput.H"
@@ -287,6 +288,17 @@ struct avalancheCase
             pb.hu[k] = Real(hasMomentum ? hU[c].x() : h[c]*U[c].x());
             pb.hv[k] = Real(hasMomentum ? hU[c].y() : h[c]*U[c].y());
         }
+        if (input.hasJet)
+        {
+            try
+            {
+                pb.setImpingingJet(input.jet);
+            }
+            catch (const sh::InputError& e)
+            {
+                input.fail(e);
+            }
+        }
         return pb;
     }
 
@@ -484,8 +496,52 @@ void run(avalancheCase& ac, const word& backend, const scalar logInterval)
     std::vector<Real> hs, hus, hvs, hPeak, speedPeak;
     wordList written(1, runTime.timeName());
     scalar lastWritten = t0;
+
+    // Approach to a steady state: |dh/dt| between consecutive write times,
+    // logged, written to postProcessing/steadyState/<t0>/dhdt.dat, and
+    // ending the run below fvSolution::savageHutter steadyStateTolerance
+    std::vector<Real> hPrev;
+    solver->getState(hPrev, hus, hvs);
+    const fileName steadyDir =
+        runTime.globalPath()/"postProcessing"/"steadyState"/runTime.timeName();
+    std::unique_ptr<OFstream> steadyFile;
+    bool steady = false;
+    auto steadyCheck = [&](const double dt)
+    {
+        double sum2 = 0, maxRate = 0;
+        for (std::size_t k = 0; k < hs.size(); ++k)
+        {
+            const double r = std::fabs(double(hs[k]) - double(hPrev[k]))/dt;
+            sum2 += r*r;
+            maxRate = std::max(maxRate, r);
+        }
+        const double rms = std::sqrt(sum2/max(double(hs.size()), 1.0));
+        hPrev = hs;
+        if (!steadyFile)
+        {
+            mkDir(steadyDir);
+            steadyFile.reset(new OFstream(steadyDir/"dhdt.dat"));
+            *steadyFile
+                << "# |dh/dt| between consecutive write times [m/s]" << nl
+                << "# Time    RMS over cells    max over cells" << nl;
+        }
+        *steadyFile << solver->time() << tab << rms << tab << maxRate
+            << endl;
+        Info<< "Steady-state check: |dh/dt| RMS " << rms << ", max "
+            << maxRate << " m/s";
+        const scalar tol = ac.input.steadyStateTolerance;
+        if (tol > 0 && maxRate < tol)
+        {
+            steady = true;
+            Info<< " < steadyStateTolerance " << tol << ": steady state"
+                << " reached at t = " << solver->time();
+        }
+        Info<< nl;
+    };
+
     auto write = [&]()
     {
+        const double dtWrite = solver->time() - lastWritten;
         solver->getState(hs, hus, hvs);
         solver->getPeaks(hPeak, speedPeak);
         if (!ac.store(hs, hus, hvs, hPeak, speedPeak))
@@ -503,6 +559,10 @@ void run(avalancheCase& ac, const word& backend, const scalar logInterval)
         functions.execute();
         written.append(runTime.timeName());
         lastWritten = solver->time();
+        if (dtWrite > 0)
+        {
+            steadyCheck(dtWrite);
+        }
     };
     auto logIfDue = [&]()
     {
@@ -519,7 +579,7 @@ void run(avalancheCase& ac, const word& backend, const scalar logInterval)
         // Solver::advance (the GPU then synchronises every step); a write
         // when the time index is a multiple of writeInterval, as in Time
         const label every = max(label(w), label(1));
-        while (solver->time() < endTime)
+        while (solver->time() < endTime && !steady)
         {
             do
             {
@@ -546,7 +606,7 @@ void run(avalancheCase& ac, const word& backend, const scalar logInterval)
     {
         // Every writeInterval seconds of wall time, wherever the run is
         wallClock::time_point lastWrite = wallClock::now();
-        while (solver->time() < endTime)
+        while (solver->time() < endTime && !steady)
         {
             const double toLog = logInterval - secondsSince(lastLog);
             const double toWrite = w - secondsSince(lastWrite);
@@ -563,7 +623,7 @@ void run(avalancheCase& ac, const word& backend, const scalar logInterval)
     else
     {
         // adjustableRunTime, runTime: every write time hit exactly
-        while (solver->time() < endTime)
+        while (solver->time() < endTime && !steady)
         {
             const scalar target =
                 min(ac.nextWriteTime(solver->time(), anchor), endTime);

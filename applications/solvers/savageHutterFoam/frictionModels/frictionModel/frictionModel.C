@@ -1,0 +1,91 @@
+/*---------------------------------------------------------------------------*\
+  savageHutterFoam: Savage-Hutter granular avalanche solver
+\*---------------------------------------------------------------------------*/
+
+#include "frictionModel.H"
+#include "FlatOutput.H"
+#include "wordList.H"
+
+namespace Foam
+{
+
+defineTypeNameAndDebug(frictionModel, 0);
+defineRunTimeSelectionTable(frictionModel, dictionary);
+
+
+frictionModel::frictionModel(const dictionary& coeffs)
+:
+    coeffs_(coeffs)
+{}
+
+
+autoPtr<frictionModel> frictionModel::New(const dictionary& tp)
+{
+    // Build the table on first use
+    const wordList valid(dictionaryConstructorTablePtr_->sortedToc());
+
+    if (!tp.found("frictionModel", keyType::LITERAL))
+    {
+        FatalIOErrorInFunction(tp)
+            << "Missing keyword 'frictionModel'." << nl
+            << "Valid choices: " << flatOutput(valid) << nl
+            << exit(FatalIOError);
+    }
+    const word name = tp.get<word>("frictionModel");
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(name);
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInFunction(tp)
+            << "Unknown frictionModel '" << name << "'." << nl
+            << "Valid choices: " << flatOutput(valid) << nl
+            << exit(FatalIOError);
+    }
+
+    const word coeffsName = name + "Coeffs";
+    if (!tp.isDict(coeffsName))
+    {
+        FatalIOErrorInFunction(tp)
+            << "frictionModel " << name << " needs the sub-dictionary '"
+            << coeffsName << "' with its coefficients, e.g." << nl
+            << "    " << coeffsName << " { ... }" << nl
+            << "(see src/savageHutter/physics/frictionLaws/" << name
+            << ".H)" << nl
+            << exit(FatalIOError);
+    }
+    return autoPtr<frictionModel>(cstrIter()(tp.subDict(coeffsName)));
+}
+
+
+scalar frictionModel::coeff(const word& key) const
+{
+    if (!coeffs_.found(key, keyType::LITERAL))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "Missing coefficient '" << key << "' in "
+            << coeffs_.dictName() << nl << exit(FatalIOError);
+    }
+    return coeffs_.get<scalar>(key);
+}
+
+
+void frictionModel::checkKeywords(const wordList& valid) const
+{
+    for (const word& key : coeffs_.toc())
+    {
+        if (!valid.found(key))
+        {
+            FatalIOErrorInFunction(coeffs_)
+                << "Unknown coefficient '" << key << "' in "
+                << coeffs_.dictName() << "." << nl
+                << "Valid coefficients: " << flatOutput(valid) << nl
+                << exit(FatalIOError);
+        }
+    }
+    for (const word& key : valid)
+    {
+        coeff(key);
+    }
+}
+
+} // End namespace Foam
