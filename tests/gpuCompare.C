@@ -108,7 +108,8 @@ struct Difference
     double maxHu = 0;       //!< max |hu|, |hv| of b (non-trivial)
 };
 
-//- The problem with the initial h of every wet cell one ulp larger
+//- The problem with the initial h of every wet cell one ulp larger (and
+//  an impinging jet's thickness scale and speed)
 template<class Real>
 Problem<Real> ulpUp(Problem<Real> pb)
 {
@@ -118,6 +119,14 @@ Problem<Real> ulpUp(Problem<Real> pb)
         {
             x = std::nextafter(x, std::numeric_limits<Real>::max());
         }
+    }
+    // A jet re-imposes its state every step, which would wipe the
+    // perturbation out there: perturb the jet's data by one ulp instead
+    JetParams<Real>& jet = pb.params.jet;
+    if (jet.on)
+    {
+        jet.hCoeff = std::nextafter(jet.hCoeff, std::numeric_limits<Real>::max());
+        jet.uJet = std::nextafter(jet.uJet, std::numeric_limits<Real>::max());
     }
     return pb;
 }

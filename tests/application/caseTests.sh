@@ -8,7 +8,9 @@
 #       - every bad input of the list below exits non-zero, prints a message
 #         naming the problem (and the valid choices where there are some),
 #         and writes no time directory;
-#       - legal edge cases run (delta = 0);
+#       - legal edge cases run (delta = 0), as do Voellmy friction and
+#         Pouliquen-Forterre friction with an impinging jet (fvOptions),
+#         whose |dh/dt| report is written;
 #       - a restart from latestTime continues exactly (files identical);
 #       - foamToVTK reads the output and finds h, U and hU.
 #     Prints one line per check and "N passed, M failed".
@@ -115,6 +117,81 @@ expectFailure missingFrictionModel "frictionModel" "Valid choices" "Coulomb"
 d=$(newCase unknownFrictionModel)
 setEntry "$d/$tp" frictionModel Voellmyy
 expectFailure unknownFrictionModel "Voellmyy" "Valid choices" "Coulomb"
+
+# Run-time selected friction models and their <Model>Coeffs
+pf='{ zeta1 21; zeta2 30.7; zeta3 22.2; L 6e-3; beta 0.136; gamma 1e-3; }'
+#- pfCase <name>: the case with PouliquenForterre and the paper's coefficients
+pfCase()
+{
+    local d
+    d=$(newCase "$1")
+    setEntry "$d/$tp" frictionModel PouliquenForterre
+    setEntry "$d/$tp" PouliquenForterreCoeffs "$pf"
+    echo "$d"
+}
+
+d=$(newCase missingCoeffsDict)
+setEntry "$d/$tp" frictionModel PouliquenForterre
+expectFailure missingCoeffsDict "PouliquenForterreCoeffs"
+
+d=$(pfCase missingCoefficient)
+foamDictionary "$d/$tp" -entry PouliquenForterreCoeffs/zeta3 -remove > /dev/null
+expectFailure missingCoefficient "zeta3" "PouliquenForterreCoeffs"
+
+d=$(pfCase unknownCoefficient)
+setEntry "$d/$tp" PouliquenForterreCoeffs/Lstop 1e-3
+expectFailure unknownCoefficient "Lstop" "Valid coefficients" "zeta1" "gamma"
+
+d=$(pfCase negativeL)
+setEntry "$d/$tp" PouliquenForterreCoeffs/L -6e-3
+expectFailure negativeL "L" "positive" "PouliquenForterreCoeffs"
+
+d=$(pfCase zeta1AboveZeta2)
+setEntry "$d/$tp" PouliquenForterreCoeffs/zeta1 35
+expectFailure zeta1AboveZeta2 "zeta1" "zeta2" "PouliquenForterreCoeffs"
+
+d=$(pfCase pfActivePassive)
+setEntry "$d/$tp" earthPressure activePassive
+expectFailure pfActivePassive "earthPressure" "isotropic"
+
+d=$(newCase voellmyZeroXi)
+setEntry "$d/$tp" frictionModel Voellmy
+setEntry "$d/$tp" VoellmyCoeffs "{ mu 0.2; xi 0; }"
+expectFailure voellmyZeroXi "xi" "positive" "VoellmyCoeffs"
+
+# The impinging-jet source of system/fvOptions (stagnation point (0 0 0) is
+# a mesh point of the 64 x 8 mesh of 0.4 m cells)
+jet='{ type impingingJet; centre (0 0 0); R 0.5; R_imp 1; u_jet 2; }'
+#- jetCase <name>: the PouliquenForterre case with a jet
+jetCase()
+{
+    local d
+    d=$(pfCase "$1")
+    cp "$d/system/controlDict" "$d/system/fvOptions"
+    foamDictionary "$d/system/fvOptions" -entry FoamFile/object -set fvOptions > /dev/null
+    for k in $(foamDictionary "$d/system/fvOptions" -keywords | grep -v FoamFile)
+    do
+        foamDictionary "$d/system/fvOptions" -entry "$k" -remove > /dev/null
+    done
+    setEntry "$d/system/fvOptions" jet "$jet"
+    echo "$d"
+}
+
+d=$(jetCase unknownSourceType)
+setEntry "$d/system/fvOptions" jet/type massSource
+expectFailure unknownSourceType "massSource" "Valid types" "impingingJet"
+
+d=$(jetCase jetNegativeRimp)
+setEntry "$d/system/fvOptions" jet/R_imp -1
+expectFailure jetNegativeRimp "R_imp" "positive" "fvOptions"
+
+d=$(jetCase jetOnCellCentre)
+setEntry "$d/system/fvOptions" jet/centre "(0.2 0.2 0)"
+expectFailure jetOnCellCentre "centre" "centre of cell" "fvOptions"
+
+d=$(jetCase jetUnknownKeyword)
+setEntry "$d/system/fvOptions" jet/Ujet 2
+expectFailure jetUnknownKeyword "Ujet" "Valid keywords" "u_jet"
 
 d=$(newCase missingEarthPressure)
 foamDictionary "$d/$tp" -entry earthPressure -remove > /dev/null
@@ -290,6 +367,31 @@ then
     pass "frictionless: delta = 0 with activePassive runs to t = 0.1"
 else
     fail "frictionless: delta = 0 did not run (see $d/log.savageHutterFoam)"
+fi
+
+# -- Legal input: Voellmy friction runs; PouliquenForterre with a jet runs ---
+d=$(newCase voellmy)
+setEntry "$d/$tp" frictionModel Voellmy
+setEntry "$d/$tp" VoellmyCoeffs "{ mu 0.2; xi 500; }"
+if (cd "$d" && savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1) \
+&& grep -q "frictionModel Voellmy { mu 0.2, xi 500 m/s^2 }" "$d/log.savageHutterFoam" \
+&& [ -f "$d/0.1/h" ]
+then
+    pass "Voellmy (mu 0.2, xi 500) selected and runs to t = 0.1"
+else
+    fail "Voellmy did not run (see $d/log.savageHutterFoam)"
+fi
+
+d=$(jetCase jet)
+setEntry "$d/$tp" earthPressure isotropic
+if (cd "$d" && savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1) \
+&& grep -q "jet: impingingJet at (0 0 0), R 0.5, R_imp 1, u_jet 2" "$d/log.savageHutterFoam" \
+&& grep -q "Steady-state check: |dh/dt| RMS" "$d/log.savageHutterFoam" \
+&& [ -f "$d/postProcessing/steadyState/0/dhdt.dat" ] && [ -f "$d/0.1/h" ]
+then
+    pass "PouliquenForterre with an impinging jet runs; |dh/dt| reported and written"
+else
+    fail "PouliquenForterre with a jet did not run (see $d/log.savageHutterFoam)"
 fi
 
 # -- Inflow: a supercritical stream enters a dry bed through fixedValue ------

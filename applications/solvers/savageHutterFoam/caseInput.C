@@ -176,7 +176,7 @@ caseInput::caseInput(const fvMesh& mesh)
         << "    holdResting       " << onOff(model.holdResting) << nl
         << "    hDry              " << model.hDry << nl
         << "    steadyStateTolerance " << steadyStateTolerance
-        << (steadyStateTolerance > 0 ? " m/s (max |dh/dt|)" : " (off)") << nl;
+        << (steadyStateTolerance > 0 ? " m/s (RMS of |dh/dt|)" : " (off)") << nl;
 
     // controlDict: the CFL number of eq. (24) and the output times
     const dictionary& cd = mesh.time().controlDict();

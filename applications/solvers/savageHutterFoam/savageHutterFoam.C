@@ -530,10 +530,10 @@ void run(avalancheCase& ac, const word& backend, const scalar logInterval)
         Info<< "Steady-state check: |dh/dt| RMS " << rms << ", max "
             << maxRate << " m/s";
         const scalar tol = ac.input.steadyStateTolerance;
-        if (tol > 0 && maxRate < tol)
+        if (tol > 0 && rms < tol)
         {
             steady = true;
-            Info<< " < steadyStateTolerance " << tol << ": steady state"
+            Info<< "; RMS < steadyStateTolerance " << tol << ": steady state"
                 << " reached at t = " << solver->time();
         }
         Info<< nl;
