@@ -218,7 +218,7 @@ compare inclinedPlane double
 compare inclinedPlane single
 
 # Pouliquen-Forterre friction and the impinging jet (portable exp/pow)
-prepare granularJet granularJet 512 256 2 0.5 \
+prepare granularJet granularJet 256 128 1 0.25 \
     system/fvSolution savageHutter/steadyStateTolerance 0
 compare granularJet double
 compare granularJet single
