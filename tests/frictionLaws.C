@@ -124,6 +124,20 @@ void handValues(Counter& t)
         "mu_start(0.01) = 0.48680213374368, mu_stop(0.01) = 0.42350761024666"
     );
 
+    // A subnormal layer at rest: eps g h cos(zeta) underflows to 0 (g = 0.1)
+    ModelInput weak = pfInput();
+    weak.g = 0.1;
+    const double muTiny =
+        frictionCoefficient(makeParams<double>(weak).friction, {4.9e-324, 0.0, cz});
+    const Params<float> pfl = makeParams<float>(weak);
+    const float muTinyF = frictionCoefficient(pfl.friction, {1.4e-45f, 0.0f, float(cz)});
+    t.check
+    (
+        std::isfinite(muTiny) && std::isfinite(muTinyF)
+     && relClose(muTiny, 0.617984955319308, 1e-13),
+        "subnormal h at rest: mu_start(0), no 0/0 (double 4.9e-324, float 1.4e-45)"
+    );
+
     // Continuity at Fr = beta: both branches give mu_stop(h)
     const double h = 0.007;
     const double c = std::sqrt(9.81*h*cz);

@@ -177,6 +177,14 @@ jetCase()
     echo "$d"
 }
 
+d=$(jetCase sourceNotDict)
+setEntry "$d/system/fvOptions" jet impingingJet
+expectFailure sourceNotDict "'jet' is not a source dictionary"
+
+d=$(jetCase jetMisspeltActive)
+setEntry "$d/system/fvOptions" jet/activ no
+expectFailure jetMisspeltActive "activ" "Valid keywords"
+
 d=$(jetCase unknownSourceType)
 setEntry "$d/system/fvOptions" jet/type massSource
 expectFailure unknownSourceType "massSource" "Valid types" "impingingJet"
@@ -386,12 +394,53 @@ d=$(jetCase jet)
 setEntry "$d/$tp" earthPressure isotropic
 if (cd "$d" && savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1) \
 && grep -q "jet: impingingJet at (0 0 0), R 0.5, R_imp 1, u_jet 2" "$d/log.savageHutterFoam" \
-&& grep -q "Steady-state check: |dh/dt| RMS" "$d/log.savageHutterFoam" \
+&& grep -q "Steady-state check: |dh/dt| over [0-9]* wet cells: RMS" "$d/log.savageHutterFoam" \
 && [ -f "$d/postProcessing/steadyState/0/dhdt.dat" ] && [ -f "$d/0.1/h" ]
 then
     pass "PouliquenForterre with an impinging jet runs; |dh/dt| reported and written"
 else
     fail "PouliquenForterre with a jet did not run (see $d/log.savageHutterFoam)"
+fi
+
+# -- steadyStateTolerance ends a run; the |dh/dt| written is the RMS over
+#    the wet cells; a restart writes its own postProcessing/steadyState/<t0>
+d=$(jetCase steadyStop)
+setEntry "$d/$tp" earthPressure isotropic
+setEntry "$d/system/fvSolution" savageHutter/steadyStateTolerance 1e9
+(cd "$d" && savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1)
+if grep -q "steady state reached at t = 0.05" "$d/log.savageHutterFoam" \
+&& grep -q "^End" "$d/log.savageHutterFoam" \
+&& [ -f "$d/0.05/h" ] && [ ! -d "$d/0.1" ]
+then
+    pass "steadyStateTolerance 1e9: the run ends at the first write time, 0.05 < endTime 0.1"
+else
+    fail "steadyStateTolerance did not end the run at t = 0.05 (see $d/log.savageHutterFoam)"
+fi
+setEntry "$d/system/fvSolution" savageHutter/steadyStateTolerance 0
+setEntry "$d/system/controlDict" startFrom latestTime
+(cd "$d" && savageHutterFoam -backend cpu > log.restart 2>&1)
+dat="$d/postProcessing/steadyState/0.05/dhdt.dat"
+if [ -f "$dat" ] && [ -f "$d/0.1/h" ] && python3 - "$d" "$dat" <<'PY'
+import re, sys
+def h(case, t):
+    d = open("%s/%s/h" % (case, t)).read()
+    m = re.search(r"internalField\s+nonuniform\s+List<scalar>\s*(\d+)\s*\(([^)]*)\)", d)
+    return [float(x) for x in m.group(2).split()]
+a, b = h(sys.argv[1], "0.05"), h(sys.argv[1], "0.1")
+r = [abs(y - x) / 0.05 for x, y in zip(a, b) if x > 1e-6 or y > 1e-6]
+rms = (sum(v * v for v in r) / len(r)) ** 0.5
+row = [l.split() for l in open(sys.argv[2]) if l.strip() and l[0] != "#"]
+t, rmsW, maxW, n = float(row[0][0]), float(row[0][1]), float(row[0][2]), int(row[0][3])
+print("      written: t %g RMS %.10g max %.10g over %d; from the fields: RMS %.10g max %.10g over %d"
+      % (t, rmsW, maxW, n, rms, max(r), len(r)))
+ok = len(row) == 1 and t == 0.1 and n == len(r) \
+    and abs(rmsW - rms) <= 1e-9 * rms and abs(maxW - max(r)) <= 1e-9 * max(r)
+sys.exit(0 if ok else 1)
+PY
+then
+    pass "restart 0.05 -> 0.1: postProcessing/steadyState/0.05 holds the RMS and max of |dh/dt| over wet cells computed from the fields"
+else
+    fail "steady-state report of the restart wrong or missing ($dat)"
 fi
 
 # -- Inflow: a supercritical stream enters a dry bed through fixedValue ------

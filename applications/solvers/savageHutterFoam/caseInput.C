@@ -176,7 +176,7 @@ caseInput::caseInput(const fvMesh& mesh)
         << "    holdResting       " << onOff(model.holdResting) << nl
         << "    hDry              " << model.hDry << nl
         << "    steadyStateTolerance " << steadyStateTolerance
-        << (steadyStateTolerance > 0 ? " m/s (RMS of |dh/dt|)" : " (off)") << nl;
+        << (steadyStateTolerance > 0 ? " m/s (RMS of |dh/dt| over wet cells)" : " (off)") << nl;
 
     // controlDict: the CFL number of eq. (24) and the output times
     const dictionary& cd = mesh.time().controlDict();
@@ -274,9 +274,18 @@ void caseInput::readSources()
     const wordList jetKeywords({"centre", "R", "R_imp", "u_jet"});
     for (const entry& e : opts)
     {
+        if (e.keyword() == "FoamFile")
+        {
+            continue;
+        }
         if (!e.isDict())
         {
-            continue;                   // FoamFile header and the like
+            FatalIOErrorInFunction(opts)
+                << "Entry '" << e.keyword() << "' is not a source"
+                << " dictionary, e.g." << nl
+                << "    jet { type impingingJet; centre (0 0 0); R 7.5e-3;"
+                << " R_imp 15e-3; u_jet 0.99; }" << nl
+                << exit(FatalIOError);
         }
         const dictionary& src = e.dict();
         const word type = src.get<word>("type");
@@ -302,18 +311,34 @@ void caseInput::readSources()
         }
         // As fvOptions: coefficients in <type>Coeffs or in the entry
         const dictionary& c = src.optionalSubDict(type + "Coeffs");
-        for (const word& key : c.toc())
+        const wordList entryKeywords({"type", "active", "selectionMode"});
+        for (const word& key : src.toc())
         {
-            const bool own =
-                jetKeywords.found(key)
-             || (&c == &src
-              && (key == "type" || key == "active" || key == "selectionMode"));
-            if (!own && !(key == type + "Coeffs"))
+            const bool ok =
+                entryKeywords.found(key) || key == type + "Coeffs"
+             || (&c == &src && jetKeywords.found(key));
+            if (!ok)
             {
-                FatalIOErrorInFunction(c)
+                FatalIOErrorInFunction(src)
                     << "Unknown keyword '" << key << "' of " << type << "."
-                    << nl << "Valid keywords: " << flatOutput(jetKeywords)
-                    << nl << exit(FatalIOError);
+                    << nl << "Valid keywords: " << flatOutput(entryKeywords)
+                    << " and " << flatOutput(jetKeywords) << " (directly or"
+                    << " in " << type << "Coeffs)" << nl
+                    << exit(FatalIOError);
+            }
+        }
+        if (&c != &src)
+        {
+            for (const word& key : c.toc())
+            {
+                if (!jetKeywords.found(key))
+                {
+                    FatalIOErrorInFunction(c)
+                        << "Unknown keyword '" << key << "' of " << type
+                        << "." << nl << "Valid keywords: "
+                        << flatOutput(jetKeywords) << nl
+                        << exit(FatalIOError);
+                }
             }
         }
         jetDict_ = &c;

@@ -508,27 +508,38 @@ void run(avalancheCase& ac, const word& backend, const scalar logInterval)
     bool steady = false;
     auto steadyCheck = [&](const double dt)
     {
+        // Over the cells wet (h > hDry) at either time: dry ground does not
+        // dilute the measure
+        const double hDry = ac.input.model.hDry;
         double sum2 = 0, maxRate = 0;
+        long nWet = 0;
         for (std::size_t k = 0; k < hs.size(); ++k)
         {
+            if (!(double(hs[k]) > hDry || double(hPrev[k]) > hDry))
+            {
+                continue;
+            }
             const double r = std::fabs(double(hs[k]) - double(hPrev[k]))/dt;
             sum2 += r*r;
             maxRate = std::max(maxRate, r);
+            ++nWet;
         }
-        const double rms = std::sqrt(sum2/max(double(hs.size()), 1.0));
+        const double rms = nWet ? std::sqrt(sum2/nWet) : 0;
         hPrev = hs;
         if (!steadyFile)
         {
             mkDir(steadyDir);
             steadyFile.reset(new OFstream(steadyDir/"dhdt.dat"));
+            steadyFile->precision(12);
             *steadyFile
-                << "# |dh/dt| between consecutive write times [m/s]" << nl
-                << "# Time    RMS over cells    max over cells" << nl;
+                << "# |dh/dt| between consecutive write times [m/s], over"
+                << " the cells wet (h > hDry) at either time" << nl
+                << "# Time    RMS    max    wet cells" << nl;
         }
         *steadyFile << solver->time() << tab << rms << tab << maxRate
-            << endl;
-        Info<< "Steady-state check: |dh/dt| RMS " << rms << ", max "
-            << maxRate << " m/s";
+            << tab << nWet << endl;
+        Info<< "Steady-state check: |dh/dt| over " << nWet << " wet cells:"
+            << " RMS " << rms << ", max " << maxRate << " m/s";
         const scalar tol = ac.input.steadyStateTolerance;
         if (tol > 0 && rms < tol)
         {

@@ -151,6 +151,28 @@ void Problem<Real>::setImpingingJet(const JetInput& in)
     }
 
     // The state the backends will impose, computed by the same function
+    params.jet = j;
+    if (imposeJet() == 0)
+    {
+        params.jet = JetParams<Real>();
+        throw InputError
+        (
+            "R_imp",
+            "no cell centre lies within R_imp = " + num(in.rImp)
+          + " of the stagnation point: refine the mesh or enlarge R_imp"
+        );
+    }
+}
+
+
+template<class Real>
+int Problem<Real>::imposeJet()
+{
+    const JetParams<Real>& j = params.jet;
+    if (!j.on)
+    {
+        return 0;
+    }
     int inside = 0;
     for (int jj = j.jMin; jj <= j.jMax; ++jj)
     {
@@ -168,7 +190,7 @@ void Problem<Real>::setImpingingJet(const JetInput& in)
                     "centre",
                     "h of eq. (38) overflows in cell (" + std::to_string(i)
                   + ", " + std::to_string(jj) + ") next to the stagnation"
-                    " point (" + num(in.xc) + " " + num(in.yc) + ")"
+                    " point"
                 );
             }
             const int c = cell(i, jj);
@@ -178,16 +200,7 @@ void Problem<Real>::setImpingingJet(const JetInput& in)
             ++inside;
         }
     }
-    if (inside == 0)
-    {
-        throw InputError
-        (
-            "R_imp",
-            "no cell centre lies within R_imp = " + num(in.rImp)
-          + " of the stagnation point: refine the mesh or enlarge R_imp"
-        );
-    }
-    params.jet = j;
+    return inside;
 }
 
 
@@ -221,6 +234,8 @@ void Problem<Real>::setState
             hv[c] = Real(s.h*s.v);
         }
     }
+    // The jet's cells keep its state (a backend may skip empty tiles)
+    imposeJet();
 }
 
 
