@@ -47,9 +47,7 @@ Enum parseName
 
 std::string str(double x)
 {
-    std::ostringstream os;
-    os << x;
-    return os.str();
+    return numberString(x);
 }
 
 void requireFinite(const std::string& keyword, double x)
@@ -144,6 +142,14 @@ void checkFrictionLaw(const ModelInput& in)
 }
 
 } // namespace
+
+
+std::string numberString(double x)
+{
+    std::ostringstream os;
+    os << x;
+    return os.str();
+}
 
 
 const std::vector<std::string>& limiterNames()

@@ -3,7 +3,6 @@
 #include "padded.H"
 
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
 namespace sh
@@ -69,12 +68,7 @@ void Problem<Real>::setInclination(const std::function<double(double)>& z)
 template<class Real>
 void Problem<Real>::setImpingingJet(const JetInput& in)
 {
-    const auto num = [](double x)
-    {
-        std::ostringstream os;
-        os << x;
-        return os.str();
-    };
+    const auto num = numberString;
     if (!(std::isfinite(in.xc) && std::isfinite(in.yc)))
     {
         throw InputError("centre", "must be finite");
