@@ -20,8 +20,8 @@ void store(const FaceFields<Real>& F, int c, const FaceFlux<Real>& f)
     F.h[c] = f.F.h;
     F.hu[c] = f.F.hu;
     F.hv[c] = f.F.hv;
-    F.pLow[c] = f.pLow;
-    F.pHigh[c] = f.pHigh;
+    F.bedLow[c] = f.bedLow;
+    F.bedHigh[c] = f.bedHigh;
 }
 
 } // namespace
@@ -153,14 +153,16 @@ void CpuSolver<Real>::advanceStep(Real dt)
         }
     }
 
-    #pragma omp parallel for if(parallel_) schedule(static)
+    long long clips = 0;
+    #pragma omp parallel for if(parallel_) reduction(+:clips) schedule(static)
     for (int j = 0; j < ny; ++j)
     {
         for (int i = 0; i < nx; ++i)
         {
-            correctorCell(m, U, Uh, Fx, Fy, theta, Un, dt, i, j);
+            clips += correctorCell(m, U, Uh, Fx, Fy, theta, Un, dt, i, j);
         }
     }
+    speedClips_ += clips;
 
     #pragma omp parallel for if(parallel_) schedule(static)
     for (int j = 0; j < ny; ++j)
@@ -205,7 +207,9 @@ void CpuSolver<Real>::getPeaks
 template<class Real>
 Diagnostics CpuSolver<Real>::diagnostics()
 {
-    return diagnosticsOf(model_, U_.view());
+    Diagnostics d = diagnosticsOf(model_, U_.view());
+    d.speedClips = speedClips_;
+    return d;
 }
 
 

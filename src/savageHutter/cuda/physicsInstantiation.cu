@@ -38,10 +38,10 @@ __global__ void allStagesKernel
     // Not a solver: every stage once, so that each is compiled
     const FaceFlux<Real> fx = fluxX(m, Uh, i, j);
     const FaceFlux<Real> fy = fluxY(m, Uh, i, j);
-    Fx.pLow[m.g.idx(i, j)] = fx.pLow;
-    Fx.pHigh[m.g.idx(i, j)] = fx.pHigh;
-    Fy.pLow[m.g.idx(i, j)] = fy.pLow;
-    Fy.pHigh[m.g.idx(i, j)] = fy.pHigh;
+    Fx.bedLow[m.g.idx(i, j)] = fx.bedLow;
+    Fx.bedHigh[m.g.idx(i, j)] = fx.bedHigh;
+    Fy.bedLow[m.g.idx(i, j)] = fy.bedLow;
+    Fy.bedHigh[m.g.idx(i, j)] = fy.bedHigh;
     theta[m.g.idx(i, j)] = drainFactor(m, U, Fx, Fy, dt, i, j);
     correctorCell(m, U, Uh, Fx, Fy, theta, Unew, dt, i, j);
     partialWetCell(m, Unew, i, j);

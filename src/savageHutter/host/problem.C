@@ -8,6 +8,24 @@
 namespace sh
 {
 
+namespace
+{
+
+//- The interior index (0..n-1) a ghost index k mirrors, as the state's
+//  ghost cells do (grid.H): -1 <- 0, -2 <- 1, n <- n-1, ..., reflected
+//  again while outside, so that a grid one cell wide mirrors that cell
+//  into both ghost layers
+int mirrored(int k, int n)
+{
+    while (k < 0 || k >= n)
+    {
+        k = k < 0 ? -1 - k : 2*n - 1 - k;
+    }
+    return k;
+}
+
+} // namespace
+
 template<class Real>
 Problem<Real>::Problem
 (
@@ -257,36 +275,21 @@ HostGeometry<Real>::HostGeometry(const Problem<Real>& pb)
     for (int k = 0; k < nc; ++k)
     {
         // Ghost columns mirror the interior, like the state
-        int i = k - ng;
-        if (i < 0) { i = -1 - i; }
-        if (i >= g.nx) { i = 2*g.nx - 1 - i; }
+        const int i = mirrored(k - ng, g.nx);
         cosZeta[k] = Real(std::cos(double(pb.zeta[i])));
         sinZeta[k] = Real(std::sin(double(pb.zeta[i])));
         kappa[k] = pb.kappa[i];
     }
 
-    // Topography gradient: centred inside, one-sided on the edges
-    dzbdx.assign(g.size(), Real(0));
-    dzbdy.assign(g.size(), Real(0));
-    for (int j = 0; j < g.ny; ++j)
+    // Topography on the padded grid; ghost cells mirror the interior
+    // (ghost -1 <- cell 0, ghost -2 <- cell 1), as the state's do, so that
+    // a lake at rest meets a wall or an open side at rest
+    zb.assign(g.size(), Real(0));
+    for (int j = -ng; j < g.ny + ng; ++j)
     {
-        for (int i = 0; i < g.nx; ++i)
+        for (int i = -ng; i < g.nx + ng; ++i)
         {
-            const int il = i > 0 ? i - 1 : i;
-            const int ih = i < g.nx - 1 ? i + 1 : i;
-            const int jl = j > 0 ? j - 1 : j;
-            const int jh = j < g.ny - 1 ? j + 1 : j;
-            const int c = g.idx(i, j);
-            if (ih > il)
-            {
-                dzbdx[c] = (pb.zb[pb.cell(ih, j)] - pb.zb[pb.cell(il, j)])
-                          /(Real(ih - il)*g.dx);
-            }
-            if (jh > jl)
-            {
-                dzbdy[c] = (pb.zb[pb.cell(i, jh)] - pb.zb[pb.cell(i, jl)])
-                          /(Real(jh - jl)*g.dy);
-            }
+            zb[g.idx(i, j)] = pb.zb[pb.cell(mirrored(i, g.nx), mirrored(j, g.ny))];
         }
     }
 }
