@@ -1,8 +1,8 @@
 /*---------------------------------------------------------------------------*\
   GPU against CPU: the CUDA backend must reproduce the CPU backend
 
-    Usage: gpuCompare damBreak|collapsingPile|inclinedPlane|inflowPlane|
-                      granularJet|voellmyPile
+    Usage: gpuCompare damBreak|collapsingPile|lakeAtRest|inclinedPlane|
+                      inflowPlane|granularJet|voellmyPile
 
     Runs the case on the CPU backend (OpenMP) and on the CUDA backend, in
     double and in float, and compares the states at several output times.
@@ -392,6 +392,12 @@ int main(int argc, char** argv)
         return run([](auto r) { return shcases::collapsingPile<decltype(r)>(64); },
             {0.5, 1, 2, 4}, true, 0);
     }
+    if (which == "lakeAtRest")
+    {
+        std::printf("Lake at rest with a shoreline, active/passive K, 64x64, t = 1 s\n");
+        return run([](auto r) { return shcases::lakeAtRest<decltype(r)>(64); },
+            {0.25, 0.5, 1}, false, 0);
+    }
     if (which == "inclinedPlane")
     {
         std::printf("Inclined plane, section 5.3, mesh 4x4x(30x14), t = 24\n");
@@ -419,6 +425,6 @@ int main(int argc, char** argv)
             {0.5, 1, 2}, false, 0);
     }
     std::fprintf(stderr, "usage: gpuCompare damBreak|collapsingPile|"
-        "inclinedPlane|inflowPlane|granularJet|voellmyPile\n");
+        "lakeAtRest|inclinedPlane|inflowPlane|granularJet|voellmyPile\n");
     return 2;
 }
