@@ -480,6 +480,7 @@ void run(avalancheCase& ac, const word& backend, const scalar logInterval)
             << "  volume = " << d.volume
             << "  wet = " << d.wetCells
             << "  moving = " << d.movingCells
+            << "  speedBounds = " << label(d.speedClips)
             << "  steps = " << solver->steps()
             << "  ETA "
             << (done > 0 ? hms(wall*(1 - done)/done) : std::string("-")).c_str()
@@ -664,7 +665,9 @@ void run(avalancheCase& ac, const word& backend, const scalar logInterval)
         << label(nCells) << " cells in " << wall << " s wall ("
         << solver->name().c_str() << ")" << nl
         << "Cell updates per second: "
-        << (wall > 0 ? updates/wall : 0.0) << nl << endl;
+        << (wall > 0 ? updates/wall : 0.0) << nl
+        << "Thin cells whose speed was bounded (speedBounds): "
+        << label(solver->diagnostics().speedClips) << nl << endl;
 }
 
 } // namespace
