@@ -57,8 +57,8 @@ timeDirs()
 }
 
 #- expectFailure <name> <pattern>... : run savageHutterFoam in case <name>
-#  (prepared by the caller), which must fail, print every pattern, and
-#  write no time directory
+#  (prepared by the caller), which must fail, print every pattern, no stack
+#  trace, and write no time directory
 expectFailure()
 {
     local name="$1"
@@ -70,6 +70,8 @@ expectFailure()
     local problems=""
     [ $rc -ne 0 ] || problems="$problems exit status 0;"
     grep -q "FOAM FATAL" "$log" || problems="$problems no FOAM FATAL message;"
+    ! grep -qE "printStack|sigFpe::sigHandler|^#[0-9]+ " "$log" \
+        || problems="$problems a stack trace;"
     local p
     for p in "$@"
     do
@@ -251,6 +253,64 @@ expectFailure maxCoAboveOne "maxCo" "(0, 1]"
 d=$(newCase writeControlBogus)
 setEntry "$d/system/controlDict" writeControl everyStep
 expectFailure writeControlBogus "writeControl" "adjustableRunTime" "timeStep"
+
+# Every controlDict entry the run depends on, checked before OpenFOAM's Time
+# reads it (writeInterval 0 was a floating-point exception inside Time)
+#- setRaw <file> <keyword> <value>: set a top-level entry as written, also
+#  values foamDictionary cannot parse (nan, inf); "-" removes it
+setRaw()
+{
+    sed -i "/^$2[ \t]/d" "$1"
+    [ "$3" = - ] || echo "$2 $3;" >> "$1"
+}
+n=0
+while IFS='|' read -r -u 3 key value expect
+do
+    n=$((n + 1))
+    d=$(newCase "controlDict$n")
+    setRaw "$d/system/controlDict" "$key" "$value"
+    expectFailure "controlDict$n" "system/controlDict" "$key" "$expect"
+done 3<<'LIST'
+writeInterval|0|(0, inf)
+writeInterval|-0.05|(0, inf)
+writeInterval|nan|(0, inf)
+writeInterval|-|Missing keyword
+deltaT|0|(0, inf)
+deltaT|inf|(0, inf)
+deltaT|-|Missing keyword
+endTime|nan|(-inf, inf)
+endTime|-|Missing keyword
+endTime|-1|endTime >= 0
+maxDeltaT|0|(0, inf)
+maxCo|nan|(0, 1]
+writePrecision|0|[1, 17]
+writePrecision|18|[1, 17]
+timePrecision|-1|[1, 17]
+timePrecision|100|[1, 17]
+purgeWrite|-1|[0,
+purgeWrite|1.5|an integer
+startFrom|beginning|(firstTime startTime latestTime)
+stopAt|later|(endTime writeNow noWriteNow nextWrite)
+writeFormat|hdf5|(ascii binary)
+timeFormat|engineering|(general fixed scientific)
+writeCompression|zip|(on off
+adjustTimeStep|maybe|yes | no
+runTimeModifiable|2|yes | no
+writeControl|-|(adjustableRunTime runTime timeStep clockTime cpuTime)
+LIST
+
+d=$(newCase controlDictStartTimeNan)
+setRaw "$d/system/controlDict" startTime nan
+expectFailure controlDictStartTimeNan "system/controlDict" "startTime" "(-inf, inf)"
+
+d=$(newCase controlDictTimeStepFraction)
+setRaw "$d/system/controlDict" writeControl timeStep
+setRaw "$d/system/controlDict" writeInterval 2.5
+expectFailure controlDictTimeStepFraction "system/controlDict" "writeInterval" "an integer in [1, inf)"
+
+d=$(newCase controlDictStopAtWriteNow)
+setRaw "$d/system/controlDict" stopAt writeNow
+expectFailure controlDictStopAtWriteNow "system/controlDict" "stopAt writeNow" "(endTime)"
 
 # -- Initial fields ------------------------------------------------------------
 d=$(newCase negativeH)

@@ -33,6 +33,7 @@ Usage
 #include "structuredMesh.H"
 #include "boundaryConditions.H"
 #include "caseInput.H"
+#include "controlSettings.H"
 #include "host/problem.H"
 #include "cpu/cpuSolver.H"
 #include "cuda/cudaSolver.H"
@@ -712,7 +713,22 @@ int main(int argc, char *argv[])
             << "Valid choices: (double single)" << nl << exit(FatalError);
     }
 
+    // Before Time reads it: Time misuses some values (a floating-point
+    // exception for writeInterval 0)
+    const controlSettings control =
+        controlSettings::readFile(args.path()/"system"/"controlDict");
+
     #include "createTime.H"
+
+    if (control.endTime < runTime.value())
+    {
+        FatalIOErrorInFunction(runTime.controlDict())
+            << "endTime " << control.endTime << " lies before the start time "
+            << runTime.timeName() << " (startFrom " << control.startFrom
+            << ")." << nl << "Valid values: endTime >= "
+            << runTime.timeName() << nl << exit(FatalIOError);
+    }
+
     #include "createMesh.H"
 
     avalancheCase ac(runTime, mesh);
