@@ -592,6 +592,102 @@ else
     fail "restart does not continue exactly (see $part)"
 fi
 
+# -- Time directories appear complete or not at all --------------------------
+#- complete <case> <time>: every field and uniform/time there, each file
+#  ending with the end divider of a finished write
+complete()
+{
+    local f
+    for f in h U hU zb regime hMax UMax uniform/time
+    do
+        tail -n 2 "$1/$2/$f" 2>/dev/null | grep -q '^// \*\*\*' || return 1
+    done
+}
+
+# A run killed (SIGKILL) again and again while it writes a time directory
+# every step: every time directory it leaves is complete; what it was
+# writing is removed, with a warning, at the restart
+d=$(newCase killedWhileWriting)
+(
+    cd "$d" || exit 1
+    setBlockCells 256 32
+    blockMesh > log.blockMesh 2>&1 && restore0Dir > /dev/null \
+        && setAvalancheFields > log.setAvalancheFields 2>&1
+) || fail "killedWhileWriting: set-up failed"
+setEntry "$d/system/controlDict" writeControl timeStep
+setEntry "$d/system/controlDict" writeInterval 1
+setEntry "$d/system/controlDict" endTime 100
+setEntry "$d/system/controlDict" startFrom latestTime
+kills=0
+incomplete=""
+for pause in 1.0 1.3 1.7 2.2 2.8
+do
+    (cd "$d" && exec savageHutterFoam -backend cpu > "log.$pause" 2>&1) &
+    pid=$!
+    sleep "$pause"
+    kill -KILL "$pid" 2>/dev/null && kills=$((kills + 1))
+    wait "$pid" 2>/dev/null
+    for t in $(timeDirs "$d")
+    do
+        complete "$d" "$t" || incomplete="$incomplete $t"
+    done
+done
+nDirs=$(timeDirs "$d" | wc -l)
+leftover=false
+[ -d "$d/.savageHutterFoam-writing" ] && leftover=true
+setEntry "$d/system/controlDict" writeControl adjustableRunTime
+setEntry "$d/system/controlDict" writeInterval 0.05
+last=$(timeDirs "$d" | sort -g | tail -n1)
+setEntry "$d/system/controlDict" endTime "$(python3 -c "print(round($last + 0.01, 6))")"
+(cd "$d" && savageHutterFoam -backend cpu > log.restart 2>&1)
+rc=$?
+warned=true
+if $leftover && ! grep -q "Removing .*savageHutterFoam-writing" "$d/log.restart"
+then
+    warned=false
+fi
+if [ "$kills" -eq 5 ] && [ "$nDirs" -gt 5 ] && [ -z "$incomplete" ] \
+&& [ $rc -eq 0 ] && $warned && [ ! -d "$d/.savageHutterFoam-writing" ]
+then
+    pass "killed while writing: 5 SIGKILLs, $nDirs time directories, all complete; restart ran (staging left by a kill: $leftover, removed with a warning)"
+else
+    fail "killed while writing: kills $kills, $nDirs dirs, incomplete:${incomplete:- none}, restart rc $rc, leftover $leftover warned $warned (see $d)"
+fi
+
+# A latest time directory cut short (an older version killed while
+# writing, an edit): the restart stops naming the file and line and says
+# what to remove; nothing is written
+d=$(newCase truncatedLatest)
+(cd "$d" && savageHutterFoam -backend cpu > log.1 2>&1)
+size=$(stat -c %s "$d/0.1/U")
+truncate -s $((size / 2)) "$d/0.1/U"
+setEntry "$d/system/controlDict" startFrom latestTime
+setEntry "$d/system/controlDict" endTime 0.2
+(cd "$d" && savageHutterFoam -backend cpu > log.2 2>&1)
+rc=$?
+log="$d/log.2"
+if [ $rc -ne 0 ] && grep -q "FOAM FATAL" "$log" && grep -qE "0\.1/U.* at line [0-9]+" "$log" \
+&& grep -q "rm -r .*/truncatedLatest/0.1" "$log" && grep -q "To restart from 0.05" "$log" \
+&& [ ! -d "$d/0.15" ] && ! grep -qE "printStack|^#[0-9]+ " "$log"
+then
+    pass "truncated latest time: stops naming $(grep -oE '[^ ]*0\.1/U[^ ]* at line [0-9]+' "$log" | head -n1 | sed "s|$work/||"), says 'rm -r .../0.1', writes nothing"
+else
+    fail "truncated latest time: rc $rc, message or hint missing, or something written (see $log)"
+fi
+
+# purgeWrite 2 keeps the last two time directories of the run
+d=$(newCase purgeWrite)
+setEntry "$d/system/controlDict" purgeWrite 2
+setEntry "$d/system/controlDict" endTime 0.2
+(cd "$d" && savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1)
+kept="$(timeDirs "$d" | sort -g | tr '\n' ' ')"
+if [ "$kept" = "0.15 0.2 " ] && complete "$d" 0.2
+then
+    pass "purgeWrite 2: the run to 0.2 keeps $kept"
+else
+    fail "purgeWrite 2: kept '$kept', expected '0.15 0.2 ' (see $d)"
+fi
+
 # -- A restart whose U was edited after the write uses h U, not the stale hU --
 d=$(newCase editedRestart)
 setEntry "$d/system/controlDict" endTime 0.05

@@ -34,6 +34,7 @@ Usage
 #include "boundaryConditions.H"
 #include "caseInput.H"
 #include "controlSettings.H"
+#include "timeDirectories.H"
 #include "host/problem.H"
 #include "cpu/cpuSolver.H"
 #include "cuda/cudaSolver.H"
@@ -391,6 +392,36 @@ struct avalancheCase
 };
 
 
+//- The case at the start time; an unreadable file is reported by
+//  reportUnreadable (with what to remove when it lies in the start time)
+autoPtr<avalancheCase> readCase(Time& runTime, const fvMesh& mesh)
+{
+    const bool ioThrows = FatalIOError.throwExceptions();
+    const bool throws = FatalError.throwExceptions();
+    autoPtr<avalancheCase> ac;
+    try
+    {
+        ac.reset(new avalancheCase(runTime, mesh));
+        ac->restoreStartTime();
+    }
+    catch (const IOerror& e)
+    {
+        FatalIOError.throwExceptions(ioThrows);
+        FatalError.throwExceptions(throws);
+        reportUnreadable(runTime, e);
+    }
+    catch (const error& e)
+    {
+        FatalIOError.throwExceptions(ioThrows);
+        FatalError.throwExceptions(throws);
+        reportUnreadable(runTime, e);
+    }
+    FatalIOError.throwExceptions(ioThrows);
+    FatalError.throwExceptions(throws);
+    return ac;
+}
+
+
 template<class Real>
 std::unique_ptr<sh::Solver<Real>> selectBackend
 (
@@ -442,6 +473,7 @@ void run(avalancheCase& ac, const word& backend, const scalar logInterval)
 
     solver->setTime(t0);
     solver->setMaxDt(ac.input.maxDeltaT);
+    atomicWriter writer(runTime);
 
     Info<< "Backend: " << solver->name().c_str() << ", "
         << (sizeof(Real) == 8 ? "double" : "single") << " precision" << nl;
@@ -567,7 +599,7 @@ void run(avalancheCase& ac, const word& backend, const scalar logInterval)
         timeNames::distinguish(solver->time(), lastWritten, written);
         runTime.setTime(solver->time(), index0 + solver->steps());
         runTime.setDeltaT(solver->lastDt(), false);
-        runTime.writeNow();
+        writer.write();
         functions.execute();
         written.append(runTime.timeName());
         lastWritten = solver->time();
@@ -731,8 +763,9 @@ int main(int argc, char *argv[])
 
     #include "createMesh.H"
 
-    avalancheCase ac(runTime, mesh);
-    ac.restoreStartTime();
+    autoPtr<avalancheCase> acPtr = readCase(runTime, mesh);
+    avalancheCase& ac = acPtr();
+    removeIncompleteWrites(runTime);
 
     // Restarts continue exactly only from states written to full precision
     if
