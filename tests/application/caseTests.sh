@@ -654,6 +654,77 @@ else
     fail "killed while writing: kills $kills, $nDirs dirs, incomplete:${incomplete:- none}, restart rc $rc, leftover $leftover warned $warned (see $d)"
 fi
 
+# -- Signals: SIGUSR1 writes the state and the run goes on; SIGTERM writes
+#    it and ends the run normally; a restart from there continues exactly
+sig=$(newCase signals)
+(
+    cd "$sig" || exit 1
+    setBlockCells 256 32
+    blockMesh > log.blockMesh 2>&1 && restore0Dir > /dev/null \
+        && setAvalancheFields > log.setAvalancheFields 2>&1
+) || fail "signals: set-up failed"
+ref="$work/signalsRef"
+rm -rf "$ref" && cp -r "$sig" "$ref"
+setEntry "$sig/system/controlDict" endTime 100
+log="$sig/log.savageHutterFoam"
+(cd "$sig" && exec savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1) &
+pid=$!
+for i in $(seq 600)
+do
+    grep -q "^Starting time loop" "$log" 2>/dev/null && break
+    sleep 0.1
+done
+sleep 0.5
+kill -USR1 "$pid"
+sleep 1
+aliveAfterUsr1=false
+kill -0 "$pid" 2>/dev/null && aliveAfterUsr1=true
+t0=$(date +%s.%N)
+kill -TERM "$pid"
+wait "$pid"
+rc=$?
+took=$(python3 -c "print('%.2f' % ($(date +%s.%N) - $t0))")
+stopDir=$(sed -n 's/^Stopped by SIGTERM at t = .*, written to \([^ ]*\) .*/\1/p' "$log")
+usr1Line=$(grep -n "^SIGUSR1 at t = .*: writing$" "$log" | head -n1 | cut -d: -f1)
+termLine=$(grep -n "^SIGTERM at t = .*: writing and stopping$" "$log" | head -n1 | cut -d: -f1)
+if [ $rc -eq 0 ] && $aliveAfterUsr1 && [ -n "$usr1Line" ] && [ -n "$termLine" ] \
+&& [ "$usr1Line" -lt "$termLine" ] && [ -n "$stopDir" ] && complete "$sig" "$stopDir" \
+&& grep -q "^End" "$log" && python3 -c "import sys; sys.exit(not $took < 10)"
+then
+    pass "signals: SIGUSR1 wrote and the run went on; SIGTERM wrote $stopDir and ended the run (exit 0) in $took s"
+else
+    fail "signals: rc $rc, alive after SIGUSR1 $aliveAfterUsr1, lines $usr1Line/$termLine, stop dir '$stopDir', $took s (see $log)"
+fi
+# The reference runs without a stop to two write times past the stop; the
+# stopped run restarts from latestTime to the same end
+if [ -n "$stopDir" ]
+then
+    end=$(python3 -c "import math; print(round((math.floor($stopDir/0.05 + 1e-6) + 2)*0.05, 6))")
+    setEntry "$ref/system/controlDict" endTime "$end"
+    setEntry "$sig/system/controlDict" endTime "$end"
+    setEntry "$sig/system/controlDict" startFrom latestTime
+    (cd "$ref" && savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1)
+    (cd "$sig" && savageHutterFoam -backend cpu > log.restart 2>&1)
+    same=true
+    compared=""
+    for t in $(timeDirs "$ref")
+    do
+        python3 -c "import sys; sys.exit(not $t > $stopDir)" || continue
+        compared="$compared $t"
+        for f in h U hU regime hMax UMax
+        do
+            cmp -s "$ref/$t/$f" "$sig/$t/$f" || { same=false; echo "      $t/$f differs"; }
+        done
+    done
+    if $same && [ "$(echo $compared | wc -w)" -eq 2 ] \
+    && grep -q "Write times on the grid of the run that wrote $stopDir: 0 + k 0.05" "$sig/log.restart"
+    then
+        pass "signals: restart from $stopDir continues exactly: files at$compared identical to an uninterrupted run"
+    else
+        fail "signals: restart from $stopDir differs from an uninterrupted run at$compared (see $sig/log.restart)"
+    fi
+fi
+
 # A latest time directory cut short (an older version killed while
 # writing, an edit): the restart stops naming the file and line and says
 # what to remove; nothing is written

@@ -35,6 +35,7 @@ Usage
 #include "caseInput.H"
 #include "controlSettings.H"
 #include "timeDirectories.H"
+#include "runSignals.H"
 #include "host/problem.H"
 #include "cpu/cpuSolver.H"
 #include "cuda/cudaSolver.H"
@@ -352,7 +353,9 @@ struct avalancheCase
     }
 
     //- The time of the start directory to full precision: the name holds
-    //  writePrecision digits, uniform/time the value itself
+    //  timePrecision digits (6: up to 5e-6 relative off, as for a time
+    //  written on a signal), uniform/time the value itself, trusted when
+    //  its name is the directory's
     void restoreStartTime()
     {
         IOobject timeIO
@@ -366,10 +369,17 @@ struct avalancheCase
         }
         const IOdictionary timeDict(timeIO);
         scalar value;
+        string name;
         if
         (
             timeDict.readIfPresent("value", value)
-         && mag(value - runTime.value()) <= 1e-6*max(mag(value), SMALL)
+         && (
+                (
+                    timeDict.readIfPresent("name", name)
+                 && name == runTime.timeName()
+                )
+             || mag(value - runTime.value()) <= 1e-6*max(mag(value), SMALL)
+            )
         )
         {
             runTime.setTime(value, runTime.timeIndex());
@@ -466,13 +476,32 @@ void run(avalancheCase& ac, const word& backend, const scalar logInterval)
     const scalar t0 = runTime.value();
     const scalar endTime = runTime.endTime().value();
     const scalar w = ac.input.writeInterval;
-    const scalar anchor =
-        mag(t0/w - std::round(t0/w)) < 1e-6 ? 0 : t0;
+    // The write times: k writeInterval from the origin of the run that
+    // wrote the start time (uniform/writeGrid), so that a restart from a
+    // time written on a signal keeps its grid; else from 0 when the start
+    // time lies on that grid, else from the start time, as in OpenFOAM
+    IOdictionary writeGrid
+    (
+        IOobject
+        (
+            "writeGrid", runTime.timeName(), "uniform", runTime,
+            IOobject::READ_IF_PRESENT, IOobject::AUTO_WRITE
+        )
+    );
+    scalar anchor = mag(t0/w - std::round(t0/w)) < 1e-6 ? 0 : t0;
+    if (writeGrid.found("origin"))
+    {
+        anchor = writeGrid.get<scalar>("origin");
+        Info<< "Write times on the grid of the run that wrote "
+            << runTime.timeName() << ": " << anchor << " + k " << w << nl;
+    }
+    writeGrid.set("origin", anchor);
     const label index0 = runTime.timeIndex();
     const double nCells = double(pb.nCells());
 
     solver->setTime(t0);
     solver->setMaxDt(ac.input.maxDeltaT);
+    solver->setInterrupt(&runSignals::pending);
     atomicWriter writer(runTime);
 
     Info<< "Backend: " << solver->name().c_str() << ", "
@@ -616,6 +645,23 @@ void run(avalancheCase& ac, const word& backend, const scalar logInterval)
         }
     };
 
+    // SIGTERM/SIGINT: write the state and stop; SIGUSR1: write and go on.
+    // True when the run is to stop.
+    bool stopped = false;
+    auto actOnSignals = [&]() -> bool
+    {
+        runSignals::pending = 0;
+        const bool stop = runSignals::stop;
+        Info<< nl << runSignals::name(runSignals::last) << " at t = "
+            << solver->time() << ": writing"
+            << (stop ? " and stopping" : "") << nl << endl;
+        if (solver->time() > lastWritten)
+        {
+            write();
+        }
+        return stop;
+    };
+
     const word& writeControl = ac.input.writeControl;
     if (writeControl == "timeStep")
     {
@@ -623,7 +669,7 @@ void run(avalancheCase& ac, const word& backend, const scalar logInterval)
         // Solver::advance (the GPU then synchronises every step); a write
         // when the time index is a multiple of writeInterval, as in Time
         const label every = max(label(w), label(1));
-        while (solver->time() < endTime && !steady)
+        while (solver->time() < endTime && !steady && !stopped)
         {
             do
             {
@@ -642,22 +688,35 @@ void run(avalancheCase& ac, const word& backend, const scalar logInterval)
             (
                 solver->time() < endTime
              && (index0 + solver->steps()) % every != 0
+             && !runSignals::pending
             );
-            write();
+            if (runSignals::pending)
+            {
+                stopped = actOnSignals();
+            }
+            else
+            {
+                write();
+            }
         }
     }
     else if (writeControl == "clockTime" || writeControl == "cpuTime")
     {
         // Every writeInterval seconds of wall time, wherever the run is
         wallClock::time_point lastWrite = wallClock::now();
-        while (solver->time() < endTime && !steady)
+        while (solver->time() < endTime && !steady && !stopped)
         {
             const double toLog = logInterval - secondsSince(lastLog);
             const double toWrite = w - secondsSince(lastWrite);
             const bool reached =
                 solver->advance(endTime, max(min(toLog, toWrite), 0.0));
             logIfDue();
-            if (reached || secondsSince(lastWrite) >= w)
+            if (runSignals::pending)
+            {
+                stopped = actOnSignals();
+                lastWrite = wallClock::now();
+            }
+            else if (reached || secondsSince(lastWrite) >= w)
             {
                 write();
                 lastWrite = wallClock::now();
@@ -667,25 +726,44 @@ void run(avalancheCase& ac, const word& backend, const scalar logInterval)
     else
     {
         // adjustableRunTime, runTime: every write time hit exactly
-        while (solver->time() < endTime && !steady)
+        while (solver->time() < endTime && !steady && !stopped)
         {
             const scalar target =
                 min(ac.nextWriteTime(solver->time(), anchor), endTime);
             while (true)
             {
                 const double budget = logInterval - secondsSince(lastLog);
-                if (solver->advance(target, max(budget, 0.0)))
+                if
+                (
+                    solver->advance(target, max(budget, 0.0))
+                 || runSignals::pending
+                )
                 {
                     break;
                 }
                 logProgress();
             }
             logIfDue();
-            write();
+            if (runSignals::pending)
+            {
+                // Written wherever the run is, target or not
+                stopped = actOnSignals();
+            }
+            else
+            {
+                write();
+            }
         }
     }
 
     functions.end();
+    if (stopped)
+    {
+        Info<< nl << "Stopped by " << runSignals::name(runSignals::last)
+            << " at t = " << solver->time() << ", written to "
+            << runTime.timeName() << " (restart: startFrom latestTime)"
+            << nl;
+    }
 
     const double wall = secondsSince(start);
     if (solver->steps() > 0)
@@ -766,6 +844,7 @@ int main(int argc, char *argv[])
     autoPtr<avalancheCase> acPtr = readCase(runTime, mesh);
     avalancheCase& ac = acPtr();
     removeIncompleteWrites(runTime);
+    runSignals::install();
 
     // Restarts continue exactly only from states written to full precision
     if
