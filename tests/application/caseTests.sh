@@ -725,6 +725,149 @@ then
     fi
 fi
 
+# -- A live controlDict (runTimeModifiable yes): changes to writeInterval,
+#    endTime and stopAt act during the run; an invalid change is reported
+#    and the run goes on as before
+#- liveCase <name>: the 256 x 32 case of the signal test, endTime 100
+liveCase()
+{
+    local d="$work/$1"
+    rm -rf "$d" && cp -r "$ref" "$d"
+    rm -rf "$d"/log.* "$d/postProcessing"
+    for t in $(timeDirs "$d"); do rm -rf "${d:?}/$t"; done
+    setEntry "$d/system/controlDict" startFrom startTime
+    setEntry "$d/system/controlDict" endTime 100
+    setEntry "$d/system/controlDict" runTimeModifiable yes
+    echo "$d"
+}
+#- liveEdit <case> <keyword> <value>...: change entries of the running
+#  case's controlDict (edited aside, then moved into place in one step)
+liveEdit()
+{
+    local d="$1"
+    shift
+    cp "$d/system/controlDict" "$d/system/controlDict.new"
+    while [ $# -ge 2 ]
+    do
+        setRaw "$d/system/controlDict.new" "$1" "$2"
+        shift 2
+    done
+    mv "$d/system/controlDict.new" "$d/system/controlDict"
+}
+#- waitFor <file> <regex> <seconds>: until the file has a matching line
+waitFor()
+{
+    local i
+    for i in $(seq $(($3 * 10)))
+    do
+        grep -qE "$2" "$1" 2>/dev/null && return 0
+        sleep 0.1
+    done
+    return 1
+}
+#- onGrid <time> <interval>: whether time is a multiple of interval
+onGrid()
+{
+    python3 -c "import sys; k = $1/$2; sys.exit(abs(k - round(k)) > 1e-6)"
+}
+
+# writeInterval 0.05 -> 0.02, then endTime 100 -> a time ahead of the run
+d=$(liveCase liveWriteInterval)
+log="$d/log.savageHutterFoam"
+(cd "$d" && exec savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1) &
+pid=$!
+waitFor "$log" "^Starting time loop" 60
+sleep 0.3
+liveEdit "$d" writeInterval 0.02
+waitFor "$log" "^controlDict changed at t = .* writeInterval 0.05 -> 0.02;" 20
+tChange=$(sed -n 's/^controlDict changed at t = \([^:]*\):.*writeInterval 0.05 -> 0.02;.*/\1/p' "$log")
+last=$(timeDirs "$d" | sort -g | tail -n1)
+end=$(python3 -c "print('%.6g' % ((round(${last:-0}/0.02) + 50)*0.02))")
+liveEdit "$d" endTime "$end"
+waitFor "$log" "^End" 300 || kill -TERM "$pid"
+wait "$pid"
+rc=$?
+offGrid=""
+after=0
+for t in $(timeDirs "$d")
+do
+    python3 -c "import sys; sys.exit(not $t > ${tChange:-1e9})" || continue
+    after=$((after + 1))
+    onGrid "$t" 0.02 || offGrid="$offGrid $t"
+done
+final=$(timeDirs "$d" | sort -g | tail -n1)
+if [ $rc -eq 0 ] && [ -n "$tChange" ] && [ -z "$offGrid" ] && [ "$after" -ge 3 ] \
+&& [ "$final" = "$end" ] && complete "$d" "$final" && grep -q "endTime 100 -> $end;" "$log"
+then
+    pass "live controlDict: writeInterval 0.05 -> 0.02 at t = $tChange ($after directories after it, all on the 0.02 grid), endTime 100 -> $end: the run ended there"
+else
+    fail "live controlDict: rc $rc, change at '$tChange', off the 0.02 grid:${offGrid:- none}, $after after, last '$final' (endTime $end) (see $log)"
+fi
+
+# An invalid change is reported and ignored; stopAt writeNow writes the
+# state wherever the run is and ends it
+d=$(liveCase liveWriteNow)
+log="$d/log.savageHutterFoam"
+(cd "$d" && exec savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1) &
+pid=$!
+waitFor "$log" "^Starting time loop" 60
+sleep 0.3
+liveEdit "$d" writeInterval 0
+waitFor "$log" "is invalid; the run goes on as before" 20
+invalidSeen=$?
+liveEdit "$d" writeInterval 0.05 stopAt writeNow
+waitFor "$log" "^End" 60 || kill -TERM "$pid"
+wait "$pid"
+rc=$?
+stopDir=$(sed -n 's/^Stopped by stopAt writeNow at t = .*, written to \([^ ]*\) .*/\1/p' "$log")
+if [ $rc -eq 0 ] && [ $invalidSeen -eq 0 ] && grep -q "Invalid writeInterval '0'" "$log" \
+&& [ -n "$stopDir" ] && complete "$d" "$stopDir" \
+&& [ "$(timeDirs "$d" | sort -g | tail -n1)" = "$stopDir" ]
+then
+    pass "live controlDict: writeInterval 0 reported and ignored; stopAt writeNow wrote $stopDir and ended the run"
+else
+    fail "live controlDict: invalid change seen $invalidSeen, rc $rc, writeNow dir '$stopDir' (see $log)"
+fi
+
+# stopAt nextWrite ends the run at the next write time; noWriteNow ends it
+# without writing
+d=$(liveCase liveNextWrite)
+setEntry "$d/system/controlDict" writeInterval 0.25
+log="$d/log.savageHutterFoam"
+(cd "$d" && exec savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1) &
+pid=$!
+waitFor "$log" "^Starting time loop" 60
+sleep 0.3
+liveEdit "$d" stopAt nextWrite
+waitFor "$log" "^End" 120 || kill -TERM "$pid"
+wait "$pid"
+rcNext=$?
+nextDir=$(sed -n 's/^Stopped by stopAt nextWrite at t = .*, written to \([^ ]*\) .*/\1/p' "$log")
+d2=$(liveCase liveNoWriteNow)
+log2="$d2/log.savageHutterFoam"
+(cd "$d2" && exec savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1) &
+pid=$!
+waitFor "$log2" "^Starting time loop" 60
+sleep 0.5
+liveEdit "$d2" stopAt noWriteNow
+waitFor "$log2" "^End" 60 || kill -TERM "$pid"
+wait "$pid"
+rcNo=$?
+offGrid=""
+for t in $(timeDirs "$d2")
+do
+    onGrid "$t" 0.05 || offGrid="$offGrid $t"
+done
+if [ $rcNext -eq 0 ] && [ -n "$nextDir" ] && onGrid "$nextDir" 0.25 && complete "$d" "$nextDir" \
+&& [ "$(timeDirs "$d" | sort -g | tail -n1)" = "$nextDir" ] \
+&& [ $rcNo -eq 0 ] && grep -q "^Stopped by stopAt noWriteNow at t = .*, not written" "$log2" \
+&& [ -z "$offGrid" ]
+then
+    pass "live controlDict: stopAt nextWrite ended the run at the write time $nextDir; stopAt noWriteNow ended it with nothing written off the write times"
+else
+    fail "live controlDict: nextWrite rc $rcNext dir '$nextDir'; noWriteNow rc $rcNo, written off the grid:${offGrid:- none} (see $log, $log2)"
+fi
+
 # A latest time directory cut short (an older version killed while
 # writing, an edit): the restart stops naming the file and line and says
 # what to remove; nothing is written

@@ -201,7 +201,11 @@ bool onOff(const dictionary& cd, const word& key, const bool deflt)
 } // namespace
 
 
-controlSettings controlSettings::read(const dictionary& cd)
+controlSettings controlSettings::read
+(
+    const dictionary& cd,
+    const bool running
+)
 {
     controlSettings c;
 
@@ -291,24 +295,29 @@ controlSettings controlSettings::read(const dictionary& cd)
         "off"
     );
     choice(cd, "timeFormat", {"general", "fixed", "scientific"}, "general");
-    c.runTimeModifiable = onOff(cd, "runTimeModifiable", true);
+    c.runTimeModifiable = onOff(cd, "runTimeModifiable", false);
 
-    if (c.stopAt != "endTime")
+    if (c.stopAt != "endTime" && !running)
     {
         const entry* e = cd.findEntry("stopAt", keyType::LITERAL);
         FatalIOErrorInFunction(cd)
             << "stopAt " << c.stopAt << " at line " << e->startLineNumber()
             << ": a run starts with stopAt endTime (" << c.stopAt
-            << " is a request to a running solver; Time would run for"
-            << " ever)." << nl << "Valid choices at the start of a run:"
-            << " (endTime)" << nl << exit(FatalIOError);
+            << " is a request to a running solver, made by editing the"
+            << " controlDict with runTimeModifiable yes)." << nl
+            << "Valid choices at the start of a run: (endTime)" << nl
+            << exit(FatalIOError);
     }
 
     return c;
 }
 
 
-controlSettings controlSettings::readFile(const fileName& path)
+controlSettings controlSettings::readFile
+(
+    const fileName& path,
+    const bool running
+)
 {
     IFstream is(path);
     if (!is.good())
@@ -317,7 +326,7 @@ controlSettings controlSettings::readFile(const fileName& path)
             << "Cannot read " << path << nl << exit(FatalError);
     }
     const dictionary cd(is);
-    return read(cd);
+    return read(cd, running);
 }
 
 } // End namespace Foam

@@ -23,6 +23,12 @@ Description
     thickness and speed of each cell since the start of the run (read back
     on restart, so that they cover the whole simulation).
 
+    Every controlDict entry the run depends on is checked before Time reads
+    it (controlSettings); time directories appear complete or not at all
+    (timeDirectories); SIGTERM/SIGINT write the state and end the run,
+    SIGUSR1 writes it (runSignals); with runTimeModifiable yes, changes to
+    endTime, writeControl, writeInterval and stopAt act during the run.
+
 Usage
     savageHutterFoam [-backend auto|cpu|cuda] [-precision double|single]
                      [-logInterval seconds]
@@ -474,7 +480,7 @@ void run(avalancheCase& ac, const word& backend, const scalar logInterval)
     std::unique_ptr<sh::Solver<Real>> solver = selectBackend(backend, pb);
 
     const scalar t0 = runTime.value();
-    const scalar endTime = runTime.endTime().value();
+    scalar endTime = runTime.endTime().value();
     const scalar w = ac.input.writeInterval;
     // The write times: k writeInterval from the origin of the run that
     // wrote the start time (uniform/writeGrid), so that a restart from a
@@ -648,6 +654,7 @@ void run(avalancheCase& ac, const word& backend, const scalar logInterval)
     // SIGTERM/SIGINT: write the state and stop; SIGUSR1: write and go on.
     // True when the run is to stop.
     bool stopped = false;
+    std::string stoppedBy;
     auto actOnSignals = [&]() -> bool
     {
         runSignals::pending = 0;
@@ -659,18 +666,139 @@ void run(avalancheCase& ac, const word& backend, const scalar logInterval)
         {
             write();
         }
+        if (stop)
+        {
+            stoppedBy = runSignals::name(runSignals::last);
+        }
         return stop;
     };
 
-    const word& writeControl = ac.input.writeControl;
-    if (writeControl == "timeStep")
+    // controlDict, with runTimeModifiable yes, read again when it changes:
+    // at every write time and every second of wall time
+    const double checkInterval = 1;
+    const fileName controlDictPath =
+        runTime.path()/runTime.system()/"controlDict";
+    double controlStamp = highResLastModified(controlDictPath);
+    wallClock::time_point lastCheck = wallClock::now();
+    bool stopAtNextWrite = false;
+    // Next write time of adjustableRunTime/runTime (recomputed once reached
+    // or when writeInterval changes)
+    scalar nextWrite = -GREAT;
+
+    // Applies endTime, writeControl, writeInterval and stopAt of a changed
+    // controlDict (an invalid one is reported and ignored); true when the
+    // run is to stop
+    auto readControlIfModified = [&]() -> bool
     {
-        // Steps driven one by one from here, with the arithmetic of
-        // Solver::advance (the GPU then synchronises every step); a write
-        // when the time index is a multiple of writeInterval, as in Time
-        const label every = max(label(w), label(1));
-        while (solver->time() < endTime && !steady && !stopped)
+        lastCheck = wallClock::now();
+        const double stamp = highResLastModified(controlDictPath);
+        if (!ac.input.control.runTimeModifiable || stamp == controlStamp)
         {
+            return false;
+        }
+        controlStamp = stamp;
+        controlSettings c;
+        const bool ioThrows = FatalIOError.throwExceptions();
+        const bool throws = FatalError.throwExceptions();
+        bool valid = true;
+        try
+        {
+            c = controlSettings::readFile(controlDictPath, true);
+        }
+        catch (const error& e)
+        {
+            valid = false;
+            Warning
+                << nl << "controlDict changed at t = " << solver->time()
+                << " but is invalid; the run goes on as before:" << nl
+                << e.message().c_str() << nl << "file: "
+                << controlDictPath << nl << endl;
+        }
+        FatalIOError.throwExceptions(ioThrows);
+        FatalError.throwExceptions(throws);
+        if (!valid)
+        {
+            return false;
+        }
+
+        controlSettings& now = ac.input.control;
+        Info<< nl << "controlDict changed at t = " << solver->time() << ":";
+        if (c.endTime != endTime)
+        {
+            Info<< " endTime " << endTime << " -> " << c.endTime << ";";
+            endTime = c.endTime;
+            runTime.setEndTime(endTime);
+        }
+        if
+        (
+            c.writeControl != ac.input.writeControl
+         || c.writeInterval != ac.input.writeInterval
+        )
+        {
+            Info<< " writeControl " << c.writeControl << ", writeInterval "
+                << ac.input.writeInterval << " -> " << c.writeInterval
+                << ";";
+            ac.input.writeControl = c.writeControl;
+            ac.input.writeInterval = c.writeInterval;
+            nextWrite = -GREAT;
+        }
+        if (c.stopAt != now.stopAt)
+        {
+            Info<< " stopAt " << c.stopAt << ";";
+        }
+        if
+        (
+            c.deltaT != now.deltaT || c.maxCo != now.maxCo
+         || c.maxDeltaT != now.maxDeltaT
+         || c.adjustTimeStep != now.adjustTimeStep
+         || c.purgeWrite != now.purgeWrite
+        )
+        {
+            Info<< " (deltaT, maxCo, maxDeltaT, adjustTimeStep and"
+                << " purgeWrite are read at the next start)";
+        }
+        Info<< nl << endl;
+        now.endTime = c.endTime;
+        now.writeControl = c.writeControl;
+        now.writeInterval = c.writeInterval;
+        now.stopAt = c.stopAt;
+        now.runTimeModifiable = c.runTimeModifiable;
+
+        stopAtNextWrite = c.stopAt == "nextWrite";
+        if (c.stopAt == "noWriteNow")
+        {
+            stoppedBy = "stopAt noWriteNow";
+            return true;
+        }
+        if (c.stopAt == "writeNow" || !(solver->time() < endTime))
+        {
+            stoppedBy = c.stopAt == "writeNow" ? "stopAt writeNow" : "endTime";
+            if (solver->time() > lastWritten)
+            {
+                write();
+            }
+            return true;
+        }
+        return false;
+    };
+
+    // One pass: advance to the next write time, signal, log or controlDict
+    // check, whichever comes first, then act on what was reached
+    wallClock::time_point lastWrite = wallClock::now();
+    while (solver->time() < endTime && !steady && !stopped)
+    {
+        const word& writeControl = ac.input.writeControl;
+        const scalar w = ac.input.writeInterval;
+        const double toLog = logInterval - secondsSince(lastLog);
+        const double toCheck = checkInterval - secondsSince(lastCheck);
+        bool due = false;
+        if (writeControl == "timeStep")
+        {
+            // Steps driven one by one from here, with the arithmetic of
+            // Solver::advance (the GPU then synchronises every step); a
+            // write when the time index is a multiple of writeInterval, as
+            // in Time
+            const label every = max(label(w), label(1));
             do
             {
                 double dt = double(solver->stableDt());
@@ -689,80 +817,76 @@ void run(avalancheCase& ac, const word& backend, const scalar logInterval)
                 solver->time() < endTime
              && (index0 + solver->steps()) % every != 0
              && !runSignals::pending
+             && secondsSince(lastCheck) < checkInterval
             );
-            if (runSignals::pending)
-            {
-                stopped = actOnSignals();
-            }
-            else
-            {
-                write();
-            }
+            due =
+                !(solver->time() < endTime)
+             || (index0 + solver->steps()) % every == 0;
         }
-    }
-    else if (writeControl == "clockTime" || writeControl == "cpuTime")
-    {
-        // Every writeInterval seconds of wall time, wherever the run is
-        wallClock::time_point lastWrite = wallClock::now();
-        while (solver->time() < endTime && !steady && !stopped)
+        else if (writeControl == "clockTime" || writeControl == "cpuTime")
         {
-            const double toLog = logInterval - secondsSince(lastLog);
+            // Every writeInterval seconds of wall time, wherever the run is
             const double toWrite = w - secondsSince(lastWrite);
-            const bool reached =
-                solver->advance(endTime, max(min(toLog, toWrite), 0.0));
+            const bool reached = solver->advance
+            (
+                endTime, max(min(min(toLog, toWrite), toCheck), 0.0)
+            );
             logIfDue();
-            if (runSignals::pending)
+            due = reached || secondsSince(lastWrite) >= w;
+        }
+        else
+        {
+            // adjustableRunTime, runTime: every write time hit exactly
+            if (!(nextWrite > solver->time()))
             {
-                stopped = actOnSignals();
-                lastWrite = wallClock::now();
+                nextWrite = ac.nextWriteTime(solver->time(), anchor);
             }
-            else if (reached || secondsSince(lastWrite) >= w)
+            due = solver->advance
+            (
+                min(nextWrite, endTime), max(min(toLog, toCheck), 0.0)
+            );
+            logIfDue();
+        }
+
+        if (runSignals::pending)
+        {
+            // Written wherever the run is, write time or not
+            stopped = actOnSignals();
+            lastWrite = wallClock::now();
+            continue;
+        }
+        if (due)
+        {
+            write();
+            lastWrite = wallClock::now();
+            if (stopAtNextWrite)
             {
-                write();
-                lastWrite = wallClock::now();
+                stoppedBy = "stopAt nextWrite";
+                stopped = true;
+                continue;
             }
         }
-    }
-    else
-    {
-        // adjustableRunTime, runTime: every write time hit exactly
-        while (solver->time() < endTime && !steady && !stopped)
+        if (due || secondsSince(lastCheck) >= checkInterval)
         {
-            const scalar target =
-                min(ac.nextWriteTime(solver->time(), anchor), endTime);
-            while (true)
-            {
-                const double budget = logInterval - secondsSince(lastLog);
-                if
-                (
-                    solver->advance(target, max(budget, 0.0))
-                 || runSignals::pending
-                )
-                {
-                    break;
-                }
-                logProgress();
-            }
-            logIfDue();
-            if (runSignals::pending)
-            {
-                // Written wherever the run is, target or not
-                stopped = actOnSignals();
-            }
-            else
-            {
-                write();
-            }
+            stopped = readControlIfModified();
         }
     }
 
     functions.end();
     if (stopped)
     {
-        Info<< nl << "Stopped by " << runSignals::name(runSignals::last)
-            << " at t = " << solver->time() << ", written to "
-            << runTime.timeName() << " (restart: startFrom latestTime)"
-            << nl;
+        Info<< nl << "Stopped by " << stoppedBy.c_str() << " at t = "
+            << solver->time();
+        if (stoppedBy == "stopAt noWriteNow")
+        {
+            Info<< ", not written (the last time directory: "
+                << runTime.timeName() << ")" << nl;
+        }
+        else
+        {
+            Info<< ", written to " << runTime.timeName()
+                << " (restart: startFrom latestTime)" << nl;
+        }
     }
 
     const double wall = secondsSince(start);
