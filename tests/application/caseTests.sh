@@ -902,6 +902,58 @@ else
     fail "purgeWrite 2: kept '$kept', expected '0.15 0.2 ' (see $d)"
 fi
 
+# -- Disk and permissions: a write that fails (here a file size limit,
+#    ulimit -f, standing in for a full disk) stops the run naming the path;
+#    the earlier time directories stay intact, nothing incomplete appears,
+#    and the next start clears what the failed write left
+d=$(newCase writeFails)
+setEntry "$d/system/controlDict" endTime 0.05
+(cd "$d" && savageHutterFoam -backend cpu > log.1 2>&1)
+cp -r "$d/0.05" "$work/writeFails.0.05"
+setEntry "$d/system/controlDict" endTime 0.1
+setEntry "$d/system/controlDict" startFrom latestTime
+# The log through a pipe: the limit is on every file the solver writes
+(cd "$d" && ulimit -f 4 && trap '' XFSZ && exec savageHutterFoam -backend cpu 2>&1) \
+    | cat > "$d/log.2"
+rc=${PIPESTATUS[0]}
+log="$d/log.2"
+intact=true
+diff -r "$work/writeFails.0.05" "$d/0.05" > /dev/null || intact=false
+if [ $rc -ne 0 ] && grep -q "FOAM FATAL" "$log" \
+&& grep -q "Cannot write .*writeFails/.savageHutterFoam-writing/0.1" "$log" \
+&& grep -q "disk full" "$log" && ! grep -qE "printStack|^#[0-9]+ " "$log" \
+&& $intact && [ ! -d "$d/0.1" ] && [ "$(timeDirs "$d")" = "0.05" ]
+then
+    (cd "$d" && savageHutterFoam -backend cpu > log.3 2>&1)
+    if grep -q "Removing .*savageHutterFoam-writing" "$d/log.3" && complete "$d" 0.1 \
+    && [ ! -d "$d/.savageHutterFoam-writing" ]
+    then
+        pass "write fails (ulimit -f 4): stops naming .savageHutterFoam-writing/0.1, 0.05 intact, no 0.1; the next start clears it and writes 0.1"
+    else
+        fail "write fails: the run after the failed write did not clear it or write 0.1 (see $d/log.3)"
+    fi
+else
+    fail "write fails: rc $rc, message, 0.05 intact $intact, or directories $(timeDirs "$d" | tr '\n' ' ') (see $log)"
+fi
+if [ "$(id -u)" -eq 0 ]
+then
+    echo "SKIP  read-only case directory: running as root, which writes whatever the permissions say"
+else
+    d=$(newCase readOnly)
+    chmod a-w "$d"
+    (cd "$d" && savageHutterFoam -backend cpu > /tmp/readOnly.$$.log 2>&1)
+    rc=$?
+    chmod u+w "$d"
+    if [ $rc -ne 0 ] && grep -q "FOAM FATAL" /tmp/readOnly.$$.log \
+    && grep -q "$d" /tmp/readOnly.$$.log && [ -z "$(timeDirs "$d")" ]
+    then
+        pass "read-only case directory: stops naming the path, writes nothing"
+    else
+        fail "read-only case directory: rc $rc (see /tmp/readOnly.$$.log)"
+    fi
+    rm -f /tmp/readOnly.$$.log
+fi
+
 # -- A restart whose U was edited after the write uses h U, not the stale hU --
 d=$(newCase editedRestart)
 setEntry "$d/system/controlDict" endTime 0.05

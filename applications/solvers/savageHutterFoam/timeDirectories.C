@@ -29,12 +29,17 @@ struct timeAccess : public Time
     }
 };
 
-[[noreturn]] void failed(const char* what, const fileName& path)
+[[noreturn]] void failed
+(
+    const char* what,
+    const fileName& path,
+    const std::string& why = std::strerror(errno)
+)
 {
-    const std::string why = std::strerror(errno);
     FatalErrorInFunction
         << "Cannot " << what << " " << path << ": " << why.c_str() << nl
-        << "The time directories written before are intact." << nl
+        << "The time directories written before are intact; the next start"
+        << " removes " << stagingDirName << "." << nl
         << exit(FatalError);
     std::abort();
 }
@@ -169,12 +174,32 @@ void atomicWriter::write()
     fileName& caseName = runTime_.caseName();
     const fileName realCase = caseName;
     caseName = realCase/stagingDirName;
-    const bool ok = runTime_.writeNow();
+    // A stream that fails (disk full) is a FatalIOError inside Time:
+    // reported here with what it means for the case
+    const std::string why =
+        "a file of it could not be written (disk full, quota, file size"
+        " limit or permissions?)";
+    const bool ioThrows = FatalIOError.throwExceptions();
+    const bool throws = FatalError.throwExceptions();
+    bool ok = false;
+    try
+    {
+        ok = runTime_.writeNow();
+    }
+    catch (const IOerror& e)
+    {
+        Perr<< nl << e << nl;
+    }
+    catch (const error& e)
+    {
+        Perr<< nl << e << nl;
+    }
+    FatalIOError.throwExceptions(ioThrows);
+    FatalError.throwExceptions(throws);
     caseName = realCase;
     if (!ok || !isDir(staged, false))
     {
-        errno = EIO;
-        failed("write", staged);
+        failed("write", staged, why);
     }
     syncTree(staged);
 
