@@ -57,8 +57,8 @@ timeDirs()
 }
 
 #- expectFailure <name> <pattern>... : run savageHutterFoam in case <name>
-#  (prepared by the caller), which must fail, print every pattern, and
-#  write no time directory
+#  (prepared by the caller), which must fail, print every pattern, no stack
+#  trace, and write no time directory
 expectFailure()
 {
     local name="$1"
@@ -70,6 +70,8 @@ expectFailure()
     local problems=""
     [ $rc -ne 0 ] || problems="$problems exit status 0;"
     grep -q "FOAM FATAL" "$log" || problems="$problems no FOAM FATAL message;"
+    ! grep -qE "printStack|sigFpe::sigHandler|^#[0-9]+ " "$log" \
+        || problems="$problems a stack trace;"
     local p
     for p in "$@"
     do
@@ -251,6 +253,64 @@ expectFailure maxCoAboveOne "maxCo" "(0, 1]"
 d=$(newCase writeControlBogus)
 setEntry "$d/system/controlDict" writeControl everyStep
 expectFailure writeControlBogus "writeControl" "adjustableRunTime" "timeStep"
+
+# Every controlDict entry the run depends on, checked before OpenFOAM's Time
+# reads it (writeInterval 0 was a floating-point exception inside Time)
+#- setRaw <file> <keyword> <value>: set a top-level entry as written, also
+#  values foamDictionary cannot parse (nan, inf); "-" removes it
+setRaw()
+{
+    sed -i "/^$2[ \t]/d" "$1"
+    [ "$3" = - ] || echo "$2 $3;" >> "$1"
+}
+n=0
+while IFS='|' read -r -u 3 key value expect
+do
+    n=$((n + 1))
+    d=$(newCase "controlDict$n")
+    setRaw "$d/system/controlDict" "$key" "$value"
+    expectFailure "controlDict$n" "system/controlDict" "$key" "$expect"
+done 3<<'LIST'
+writeInterval|0|(0, inf)
+writeInterval|-0.05|(0, inf)
+writeInterval|nan|(0, inf)
+writeInterval|-|Missing keyword
+deltaT|0|(0, inf)
+deltaT|inf|(0, inf)
+deltaT|-|Missing keyword
+endTime|nan|(-inf, inf)
+endTime|-|Missing keyword
+endTime|-1|endTime >= 0
+maxDeltaT|0|(0, inf)
+maxCo|nan|(0, 1]
+writePrecision|0|[1, 17]
+writePrecision|18|[1, 17]
+timePrecision|-1|[1, 17]
+timePrecision|100|[1, 17]
+purgeWrite|-1|[0,
+purgeWrite|1.5|an integer
+startFrom|beginning|(firstTime startTime latestTime)
+stopAt|later|(endTime writeNow noWriteNow nextWrite)
+writeFormat|hdf5|(ascii binary)
+timeFormat|engineering|(general fixed scientific)
+writeCompression|zip|(on off
+adjustTimeStep|maybe|yes | no
+runTimeModifiable|2|yes | no
+writeControl|-|(adjustableRunTime runTime timeStep clockTime cpuTime)
+LIST
+
+d=$(newCase controlDictStartTimeNan)
+setRaw "$d/system/controlDict" startTime nan
+expectFailure controlDictStartTimeNan "system/controlDict" "startTime" "(-inf, inf)"
+
+d=$(newCase controlDictTimeStepFraction)
+setRaw "$d/system/controlDict" writeControl timeStep
+setRaw "$d/system/controlDict" writeInterval 2.5
+expectFailure controlDictTimeStepFraction "system/controlDict" "writeInterval" "an integer in [1, inf)"
+
+d=$(newCase controlDictStopAtWriteNow)
+setRaw "$d/system/controlDict" stopAt writeNow
+expectFailure controlDictStopAtWriteNow "system/controlDict" "stopAt writeNow" "(endTime)"
 
 # -- Initial fields ------------------------------------------------------------
 d=$(newCase negativeH)
@@ -530,6 +590,368 @@ then
     pass "restart: 0 -> 0.15, then latestTime -> 0.3, files identical to 0 -> 0.3"
 else
     fail "restart does not continue exactly (see $part)"
+fi
+
+# -- Time directories appear complete or not at all --------------------------
+#- complete <case> <time>: every field and uniform/time there, each file
+#  ending with the end divider of a finished write
+complete()
+{
+    local f
+    for f in h U hU zb regime hMax UMax uniform/time
+    do
+        tail -n 2 "$1/$2/$f" 2>/dev/null | grep -q '^// \*\*\*' || return 1
+    done
+}
+
+# A run killed (SIGKILL) again and again while it writes a time directory
+# every step: every time directory it leaves is complete; what it was
+# writing is removed, with a warning, at the restart
+d=$(newCase killedWhileWriting)
+(
+    cd "$d" || exit 1
+    setBlockCells 256 32
+    blockMesh > log.blockMesh 2>&1 && restore0Dir > /dev/null \
+        && setAvalancheFields > log.setAvalancheFields 2>&1
+) || fail "killedWhileWriting: set-up failed"
+setEntry "$d/system/controlDict" writeControl timeStep
+setEntry "$d/system/controlDict" writeInterval 1
+setEntry "$d/system/controlDict" endTime 100
+setEntry "$d/system/controlDict" startFrom latestTime
+kills=0
+incomplete=""
+for pause in 1.0 1.3 1.7 2.2 2.8
+do
+    (cd "$d" && exec savageHutterFoam -backend cpu > "log.$pause" 2>&1) &
+    pid=$!
+    sleep "$pause"
+    kill -KILL "$pid" 2>/dev/null && kills=$((kills + 1))
+    wait "$pid" 2>/dev/null
+    for t in $(timeDirs "$d")
+    do
+        complete "$d" "$t" || incomplete="$incomplete $t"
+    done
+done
+nDirs=$(timeDirs "$d" | wc -l)
+leftover=false
+[ -d "$d/.savageHutterFoam-writing" ] && leftover=true
+setEntry "$d/system/controlDict" writeControl adjustableRunTime
+setEntry "$d/system/controlDict" writeInterval 0.05
+last=$(timeDirs "$d" | sort -g | tail -n1)
+setEntry "$d/system/controlDict" endTime "$(python3 -c "print(round($last + 0.01, 6))")"
+(cd "$d" && savageHutterFoam -backend cpu > log.restart 2>&1)
+rc=$?
+warned=true
+if $leftover && ! grep -q "Removing .*savageHutterFoam-writing" "$d/log.restart"
+then
+    warned=false
+fi
+if [ "$kills" -eq 5 ] && [ "$nDirs" -gt 5 ] && [ -z "$incomplete" ] \
+&& [ $rc -eq 0 ] && $warned && [ ! -d "$d/.savageHutterFoam-writing" ]
+then
+    pass "killed while writing: 5 SIGKILLs, $nDirs time directories, all complete; restart ran (staging left by a kill: $leftover, removed with a warning)"
+else
+    fail "killed while writing: kills $kills, $nDirs dirs, incomplete:${incomplete:- none}, restart rc $rc, leftover $leftover warned $warned (see $d)"
+fi
+
+# -- Signals: SIGUSR1 writes the state and the run goes on; SIGTERM writes
+#    it and ends the run normally; a restart from there continues exactly
+sig=$(newCase signals)
+(
+    cd "$sig" || exit 1
+    setBlockCells 256 32
+    blockMesh > log.blockMesh 2>&1 && restore0Dir > /dev/null \
+        && setAvalancheFields > log.setAvalancheFields 2>&1
+) || fail "signals: set-up failed"
+ref="$work/signalsRef"
+rm -rf "$ref" && cp -r "$sig" "$ref"
+setEntry "$sig/system/controlDict" endTime 100
+log="$sig/log.savageHutterFoam"
+(cd "$sig" && exec savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1) &
+pid=$!
+for i in $(seq 600)
+do
+    grep -q "^Starting time loop" "$log" 2>/dev/null && break
+    sleep 0.1
+done
+sleep 0.5
+kill -USR1 "$pid"
+sleep 1
+aliveAfterUsr1=false
+kill -0 "$pid" 2>/dev/null && aliveAfterUsr1=true
+t0=$(date +%s.%N)
+kill -TERM "$pid"
+wait "$pid"
+rc=$?
+took=$(python3 -c "print('%.2f' % ($(date +%s.%N) - $t0))")
+stopDir=$(sed -n 's/^Stopped by SIGTERM at t = .*, written to \([^ ]*\) .*/\1/p' "$log")
+usr1Line=$(grep -n "^SIGUSR1 at t = .*: writing$" "$log" | head -n1 | cut -d: -f1)
+termLine=$(grep -n "^SIGTERM at t = .*: writing and stopping$" "$log" | head -n1 | cut -d: -f1)
+if [ $rc -eq 0 ] && $aliveAfterUsr1 && [ -n "$usr1Line" ] && [ -n "$termLine" ] \
+&& [ "$usr1Line" -lt "$termLine" ] && [ -n "$stopDir" ] && complete "$sig" "$stopDir" \
+&& grep -q "^End" "$log" && python3 -c "import sys; sys.exit(not $took < 10)"
+then
+    pass "signals: SIGUSR1 wrote and the run went on; SIGTERM wrote $stopDir and ended the run (exit 0) in $took s"
+else
+    fail "signals: rc $rc, alive after SIGUSR1 $aliveAfterUsr1, lines $usr1Line/$termLine, stop dir '$stopDir', $took s (see $log)"
+fi
+# The reference runs without a stop to two write times past the stop; the
+# stopped run restarts from latestTime to the same end
+if [ -n "$stopDir" ]
+then
+    end=$(python3 -c "import math; print(round((math.floor($stopDir/0.05 + 1e-6) + 2)*0.05, 6))")
+    setEntry "$ref/system/controlDict" endTime "$end"
+    setEntry "$sig/system/controlDict" endTime "$end"
+    setEntry "$sig/system/controlDict" startFrom latestTime
+    (cd "$ref" && savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1)
+    (cd "$sig" && savageHutterFoam -backend cpu > log.restart 2>&1)
+    same=true
+    compared=""
+    for t in $(timeDirs "$ref")
+    do
+        python3 -c "import sys; sys.exit(not $t > $stopDir)" || continue
+        compared="$compared $t"
+        for f in h U hU regime hMax UMax
+        do
+            cmp -s "$ref/$t/$f" "$sig/$t/$f" || { same=false; echo "      $t/$f differs"; }
+        done
+    done
+    if $same && [ "$(echo $compared | wc -w)" -eq 2 ] \
+    && grep -q "Write times on the grid of the run that wrote $stopDir: 0 + k 0.05" "$sig/log.restart"
+    then
+        pass "signals: restart from $stopDir continues exactly: files at$compared identical to an uninterrupted run"
+    else
+        fail "signals: restart from $stopDir differs from an uninterrupted run at$compared (see $sig/log.restart)"
+    fi
+fi
+
+# -- A live controlDict (runTimeModifiable yes): changes to writeInterval,
+#    endTime and stopAt act during the run; an invalid change is reported
+#    and the run goes on as before
+#- liveCase <name>: the 256 x 32 case of the signal test, endTime 100
+liveCase()
+{
+    local d="$work/$1"
+    rm -rf "$d" && cp -r "$ref" "$d"
+    rm -rf "$d"/log.* "$d/postProcessing"
+    for t in $(timeDirs "$d"); do rm -rf "${d:?}/$t"; done
+    setEntry "$d/system/controlDict" startFrom startTime
+    setEntry "$d/system/controlDict" endTime 100
+    setEntry "$d/system/controlDict" runTimeModifiable yes
+    echo "$d"
+}
+#- liveEdit <case> <keyword> <value>...: change entries of the running
+#  case's controlDict (edited aside, then moved into place in one step)
+liveEdit()
+{
+    local d="$1"
+    shift
+    cp "$d/system/controlDict" "$d/system/controlDict.new"
+    while [ $# -ge 2 ]
+    do
+        setRaw "$d/system/controlDict.new" "$1" "$2"
+        shift 2
+    done
+    mv "$d/system/controlDict.new" "$d/system/controlDict"
+}
+#- waitFor <file> <regex> <seconds>: until the file has a matching line
+waitFor()
+{
+    local i
+    for i in $(seq $(($3 * 10)))
+    do
+        grep -qE "$2" "$1" 2>/dev/null && return 0
+        sleep 0.1
+    done
+    return 1
+}
+#- onGrid <time> <interval>: whether time is a multiple of interval
+onGrid()
+{
+    python3 -c "import sys; k = $1/$2; sys.exit(abs(k - round(k)) > 1e-6)"
+}
+
+# writeInterval 0.05 -> 0.02, then endTime 100 -> a time ahead of the run
+d=$(liveCase liveWriteInterval)
+log="$d/log.savageHutterFoam"
+(cd "$d" && exec savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1) &
+pid=$!
+waitFor "$log" "^Starting time loop" 60
+sleep 0.3
+liveEdit "$d" writeInterval 0.02
+waitFor "$log" "^controlDict changed at t = .* writeInterval 0.05 -> 0.02;" 20
+tChange=$(sed -n 's/^controlDict changed at t = \([^:]*\):.*writeInterval 0.05 -> 0.02;.*/\1/p' "$log")
+last=$(timeDirs "$d" | sort -g | tail -n1)
+end=$(python3 -c "print('%.6g' % ((round(${last:-0}/0.02) + 50)*0.02))")
+liveEdit "$d" endTime "$end"
+waitFor "$log" "^End" 300 || kill -TERM "$pid"
+wait "$pid"
+rc=$?
+offGrid=""
+after=0
+for t in $(timeDirs "$d")
+do
+    python3 -c "import sys; sys.exit(not $t > ${tChange:-1e9})" || continue
+    after=$((after + 1))
+    onGrid "$t" 0.02 || offGrid="$offGrid $t"
+done
+final=$(timeDirs "$d" | sort -g | tail -n1)
+if [ $rc -eq 0 ] && [ -n "$tChange" ] && [ -z "$offGrid" ] && [ "$after" -ge 3 ] \
+&& [ "$final" = "$end" ] && complete "$d" "$final" && grep -q "endTime 100 -> $end;" "$log"
+then
+    pass "live controlDict: writeInterval 0.05 -> 0.02 at t = $tChange ($after directories after it, all on the 0.02 grid), endTime 100 -> $end: the run ended there"
+else
+    fail "live controlDict: rc $rc, change at '$tChange', off the 0.02 grid:${offGrid:- none}, $after after, last '$final' (endTime $end) (see $log)"
+fi
+
+# An invalid change is reported and ignored; stopAt writeNow writes the
+# state wherever the run is and ends it
+d=$(liveCase liveWriteNow)
+log="$d/log.savageHutterFoam"
+(cd "$d" && exec savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1) &
+pid=$!
+waitFor "$log" "^Starting time loop" 60
+sleep 0.3
+liveEdit "$d" writeInterval 0
+waitFor "$log" "is invalid; the run goes on as before" 20
+invalidSeen=$?
+liveEdit "$d" writeInterval 0.05 stopAt writeNow
+waitFor "$log" "^End" 60 || kill -TERM "$pid"
+wait "$pid"
+rc=$?
+stopDir=$(sed -n 's/^Stopped by stopAt writeNow at t = .*, written to \([^ ]*\) .*/\1/p' "$log")
+if [ $rc -eq 0 ] && [ $invalidSeen -eq 0 ] && grep -q "Invalid writeInterval '0'" "$log" \
+&& [ -n "$stopDir" ] && complete "$d" "$stopDir" \
+&& [ "$(timeDirs "$d" | sort -g | tail -n1)" = "$stopDir" ]
+then
+    pass "live controlDict: writeInterval 0 reported and ignored; stopAt writeNow wrote $stopDir and ended the run"
+else
+    fail "live controlDict: invalid change seen $invalidSeen, rc $rc, writeNow dir '$stopDir' (see $log)"
+fi
+
+# stopAt nextWrite ends the run at the next write time; noWriteNow ends it
+# without writing
+d=$(liveCase liveNextWrite)
+setEntry "$d/system/controlDict" writeInterval 0.25
+log="$d/log.savageHutterFoam"
+(cd "$d" && exec savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1) &
+pid=$!
+waitFor "$log" "^Starting time loop" 60
+sleep 0.3
+liveEdit "$d" stopAt nextWrite
+waitFor "$log" "^End" 120 || kill -TERM "$pid"
+wait "$pid"
+rcNext=$?
+nextDir=$(sed -n 's/^Stopped by stopAt nextWrite at t = .*, written to \([^ ]*\) .*/\1/p' "$log")
+d2=$(liveCase liveNoWriteNow)
+log2="$d2/log.savageHutterFoam"
+(cd "$d2" && exec savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1) &
+pid=$!
+waitFor "$log2" "^Starting time loop" 60
+sleep 0.5
+liveEdit "$d2" stopAt noWriteNow
+waitFor "$log2" "^End" 60 || kill -TERM "$pid"
+wait "$pid"
+rcNo=$?
+offGrid=""
+for t in $(timeDirs "$d2")
+do
+    onGrid "$t" 0.05 || offGrid="$offGrid $t"
+done
+if [ $rcNext -eq 0 ] && [ -n "$nextDir" ] && onGrid "$nextDir" 0.25 && complete "$d" "$nextDir" \
+&& [ "$(timeDirs "$d" | sort -g | tail -n1)" = "$nextDir" ] \
+&& [ $rcNo -eq 0 ] && grep -q "^Stopped by stopAt noWriteNow at t = .*, not written" "$log2" \
+&& [ -z "$offGrid" ]
+then
+    pass "live controlDict: stopAt nextWrite ended the run at the write time $nextDir; stopAt noWriteNow ended it with nothing written off the write times"
+else
+    fail "live controlDict: nextWrite rc $rcNext dir '$nextDir'; noWriteNow rc $rcNo, written off the grid:${offGrid:- none} (see $log, $log2)"
+fi
+
+# A latest time directory cut short (an older version killed while
+# writing, an edit): the restart stops naming the file and line and says
+# what to remove; nothing is written
+d=$(newCase truncatedLatest)
+(cd "$d" && savageHutterFoam -backend cpu > log.1 2>&1)
+size=$(stat -c %s "$d/0.1/U")
+truncate -s $((size / 2)) "$d/0.1/U"
+setEntry "$d/system/controlDict" startFrom latestTime
+setEntry "$d/system/controlDict" endTime 0.2
+(cd "$d" && savageHutterFoam -backend cpu > log.2 2>&1)
+rc=$?
+log="$d/log.2"
+if [ $rc -ne 0 ] && grep -q "FOAM FATAL" "$log" && grep -qE "0\.1/U.* at line [0-9]+" "$log" \
+&& grep -q "rm -r .*/truncatedLatest/0.1" "$log" && grep -q "To restart from 0.05" "$log" \
+&& [ ! -d "$d/0.15" ] && ! grep -qE "printStack|^#[0-9]+ " "$log"
+then
+    pass "truncated latest time: stops naming $(grep -oE '[^ ]*0\.1/U[^ ]* at line [0-9]+' "$log" | head -n1 | sed "s|$work/||"), says 'rm -r .../0.1', writes nothing"
+else
+    fail "truncated latest time: rc $rc, message or hint missing, or something written (see $log)"
+fi
+
+# purgeWrite 2 keeps the last two time directories of the run
+d=$(newCase purgeWrite)
+setEntry "$d/system/controlDict" purgeWrite 2
+setEntry "$d/system/controlDict" endTime 0.2
+(cd "$d" && savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1)
+kept="$(timeDirs "$d" | sort -g | tr '\n' ' ')"
+if [ "$kept" = "0.15 0.2 " ] && complete "$d" 0.2
+then
+    pass "purgeWrite 2: the run to 0.2 keeps $kept"
+else
+    fail "purgeWrite 2: kept '$kept', expected '0.15 0.2 ' (see $d)"
+fi
+
+# -- Disk and permissions: a write that fails (here a file size limit,
+#    ulimit -f, standing in for a full disk) stops the run naming the path;
+#    the earlier time directories stay intact, nothing incomplete appears,
+#    and the next start clears what the failed write left
+d=$(newCase writeFails)
+setEntry "$d/system/controlDict" endTime 0.05
+(cd "$d" && savageHutterFoam -backend cpu > log.1 2>&1)
+cp -r "$d/0.05" "$work/writeFails.0.05"
+setEntry "$d/system/controlDict" endTime 0.1
+setEntry "$d/system/controlDict" startFrom latestTime
+# The log through a pipe: the limit is on every file the solver writes
+(cd "$d" && ulimit -f 4 && trap '' XFSZ && exec savageHutterFoam -backend cpu 2>&1) \
+    | cat > "$d/log.2"
+rc=${PIPESTATUS[0]}
+log="$d/log.2"
+intact=true
+diff -r "$work/writeFails.0.05" "$d/0.05" > /dev/null || intact=false
+if [ $rc -ne 0 ] && grep -q "FOAM FATAL" "$log" \
+&& grep -q "Cannot write .*writeFails/.savageHutterFoam-writing/0.1" "$log" \
+&& grep -q "disk full" "$log" && ! grep -qE "printStack|^#[0-9]+ " "$log" \
+&& $intact && [ ! -d "$d/0.1" ] && [ "$(timeDirs "$d")" = "0.05" ]
+then
+    (cd "$d" && savageHutterFoam -backend cpu > log.3 2>&1)
+    if grep -q "Removing .*savageHutterFoam-writing" "$d/log.3" && complete "$d" 0.1 \
+    && [ ! -d "$d/.savageHutterFoam-writing" ]
+    then
+        pass "write fails (ulimit -f 4): stops naming .savageHutterFoam-writing/0.1, 0.05 intact, no 0.1; the next start clears it and writes 0.1"
+    else
+        fail "write fails: the run after the failed write did not clear it or write 0.1 (see $d/log.3)"
+    fi
+else
+    fail "write fails: rc $rc, message, 0.05 intact $intact, or directories $(timeDirs "$d" | tr '\n' ' ') (see $log)"
+fi
+if [ "$(id -u)" -eq 0 ]
+then
+    echo "SKIP  read-only case directory: running as root, which writes whatever the permissions say"
+else
+    d=$(newCase readOnly)
+    chmod a-w "$d"
+    (cd "$d" && savageHutterFoam -backend cpu > /tmp/readOnly.$$.log 2>&1)
+    rc=$?
+    chmod u+w "$d"
+    if [ $rc -ne 0 ] && grep -q "FOAM FATAL" /tmp/readOnly.$$.log \
+    && grep -q "$d" /tmp/readOnly.$$.log && [ -z "$(timeDirs "$d")" ]
+    then
+        pass "read-only case directory: stops naming the path, writes nothing"
+    else
+        fail "read-only case directory: rc $rc (see /tmp/readOnly.$$.log)"
+    fi
+    rm -f /tmp/readOnly.$$.log
 fi
 
 # -- A restart whose U was edited after the write uses h U, not the stale hU --

@@ -179,52 +179,18 @@ caseInput::caseInput(const fvMesh& mesh)
         << (steadyStateTolerance > 0 ? " m/s (RMS of |dh/dt| over wet cells)" : " (off)") << nl;
 
     // controlDict: the CFL number of eq. (24) and the output times
-    const dictionary& cd = mesh.time().controlDict();
-    adjustTimeStep = cd.getOrDefault<Switch>("adjustTimeStep", false);
-    deltaT = cd.get<scalar>("deltaT");
-    maxDeltaT = cd.getOrDefault<scalar>("maxDeltaT", GREAT);
-    if (adjustTimeStep)
+    control = controlSettings::read(mesh.time().controlDict());
+    adjustTimeStep = control.adjustTimeStep;
+    deltaT = control.deltaT;
+    maxDeltaT = control.maxDeltaT;
+    // Fixed deltaT: still never beyond the stability limit Co = 1
+    model.cfl = adjustTimeStep ? control.maxCo : 1;
+    if (!adjustTimeStep)
     {
-        model.cfl = cd.getOrDefault<scalar>("maxCo", 1);
-    }
-    else
-    {
-        // Fixed deltaT, still never beyond the stability limit Co = 1
-        model.cfl = 1;
         maxDeltaT = deltaT;
     }
-    if (!(deltaT > 0) || !(maxDeltaT > 0))
-    {
-        FatalIOErrorInFunction(cd)
-            << "deltaT and maxDeltaT must be positive, got deltaT = "
-            << deltaT << ", maxDeltaT = " << maxDeltaT << nl
-            << exit(FatalIOError);
-    }
-
-    writeControl = cd.get<word>("writeControl");
-    const wordList validWrite
-    ({
-        "adjustableRunTime", "runTime", "timeStep", "clockTime", "cpuTime"
-    });
-    if (!validWrite.found(writeControl))
-    {
-        FatalIOErrorInFunction(cd)
-            << "Unknown writeControl " << writeControl << nl
-            << "Valid choices: " << flatOutput(validWrite) << nl
-            << exit(FatalIOError);
-    }
-    writeInterval = cd.get<scalar>("writeInterval");
-    if
-    (
-        !(writeInterval > 0)
-     || (writeControl == "timeStep" && writeInterval < 1)
-    )
-    {
-        FatalIOErrorInFunction(cd)
-            << "writeInterval must be positive (at least 1 with writeControl"
-            << " timeStep), got " << writeInterval << nl
-            << exit(FatalIOError);
-    }
+    writeControl = control.writeControl;
+    writeInterval = control.writeInterval;
 
     if (adjustTimeStep)
     {

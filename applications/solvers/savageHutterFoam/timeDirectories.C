@@ -1,0 +1,229 @@
+/*---------------------------------------------------------------------------*\
+  savageHutterFoam: Savage-Hutter granular avalanche solver
+\*---------------------------------------------------------------------------*/
+
+#include "timeDirectories.H"
+#include "OSspecific.H"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fcntl.h>
+#include <unistd.h>
+
+namespace Foam
+{
+
+const word stagingDirName(".savageHutterFoam-writing");
+
+namespace
+{
+
+//- Time's purgeWrite, which would remove directories by their staged path
+struct timeAccess : public Time
+{
+    static label& purgeWrite(Time& t)
+    {
+        return t.*(&timeAccess::purgeWrite_);
+    }
+};
+
+[[noreturn]] void failed
+(
+    const char* what,
+    const fileName& path,
+    const std::string& why = std::strerror(errno)
+)
+{
+    FatalErrorInFunction
+        << "Cannot " << what << " " << path << ": " << why.c_str() << nl
+        << "The time directories written before are intact; the next start"
+        << " removes " << stagingDirName << "." << nl
+        << exit(FatalError);
+    std::abort();
+}
+
+//- Flush a file or directory to disk
+void syncPath(const fileName& path)
+{
+    const int fd = ::open(path.c_str(), O_RDONLY);
+    if (fd < 0 || ::fsync(fd) != 0)
+    {
+        failed("flush to disk", path);
+    }
+    ::close(fd);
+}
+
+void syncTree(const fileName& dir)
+{
+    for (const fileName& f : readDir(dir, fileName::FILE, false, false))
+    {
+        syncPath(dir/f);
+    }
+    for (const fileName& d : readDir(dir, fileName::DIRECTORY, false, false))
+    {
+        syncTree(dir/d);
+    }
+    syncPath(dir);
+}
+
+void renameOrFail(const fileName& from, const fileName& to)
+{
+    if (::rename(from.c_str(), to.c_str()) != 0)
+    {
+        failed("rename into place", from);
+    }
+}
+
+} // namespace
+
+
+void removeIncompleteWrites(const Time& runTime)
+{
+    const fileName staging = runTime.path()/stagingDirName;
+    if (!isDir(staging, false))
+    {
+        return;
+    }
+    WarningInFunction
+        << "Removing " << staging << " with "
+        << flatOutput(readDir(staging, fileName::DIRECTORY, false, false))
+        << ": incomplete time directories of a run stopped while writing"
+        << " them (killed, out of memory, node lost); the complete time"
+        << " directories are kept" << nl << endl;
+    if (!rmDir(staging))
+    {
+        failed("remove", staging);
+    }
+}
+
+
+namespace
+{
+
+[[noreturn]] void hintAndExit(const Time& runTime, const string& file)
+{
+    const fileName startDir = runTime.timePath();
+    const bool inStart =
+        file.size() > startDir.size()
+     && file.compare(0, startDir.size(), startDir) == 0
+     && file[startDir.size()] == '/';
+    const instantList times =
+        Time::findTimes(runTime.path(), runTime.constant());
+    label before = -1;
+    forAll(times, i)
+    {
+        if (times[i].value() < runTime.value() && times[i].name() != "constant")
+        {
+            before = i;
+        }
+    }
+    if (inStart && before >= 0)
+    {
+        Perr<< nl << "The start time directory " << runTime.timeName()
+            << " cannot be read (above). A run killed while writing it"
+            << " (before time directories were written whole), or an edit,"
+            << " may have cut it short. Nothing is written. To restart from"
+            << " " << times[before].name() << ", the time before it:" << nl
+            << "    rm -r " << startDir << nl;
+    }
+    Perr<< nl << "FOAM exiting" << nl << endl;
+    std::exit(1);
+}
+
+} // namespace
+
+
+void reportUnreadable(const Time& runTime, const IOerror& err)
+{
+    Perr<< nl << err << nl;
+    hintAndExit(runTime, err.ioFileName());
+}
+
+
+void reportUnreadable(const Time& runTime, const error& err)
+{
+    Perr<< nl << err << nl;
+    hintAndExit(runTime, string::null);
+}
+
+
+atomicWriter::atomicWriter(Time& runTime)
+:
+    runTime_(runTime),
+    purgeWrite_(timeAccess::purgeWrite(runTime))
+{
+    timeAccess::purgeWrite(runTime) = 0;
+}
+
+
+void atomicWriter::write()
+{
+    const fileName caseDir = runTime_.path();
+    const fileName staging = caseDir/stagingDirName;
+    const word name = runTime_.timeName();
+    const fileName staged = staging/name;
+    const fileName target = caseDir/name;
+    if (isDir(staged, false))
+    {
+        rmDir(staged);
+    }
+
+    // Time writes under path() = rootPath()/caseName()
+    fileName& caseName = runTime_.caseName();
+    const fileName realCase = caseName;
+    caseName = realCase/stagingDirName;
+    // A stream that fails (disk full) is a FatalIOError inside Time:
+    // reported here with what it means for the case
+    const std::string why =
+        "a file of it could not be written (disk full, quota, file size"
+        " limit or permissions?)";
+    const bool ioThrows = FatalIOError.throwExceptions();
+    const bool throws = FatalError.throwExceptions();
+    bool ok = false;
+    try
+    {
+        ok = runTime_.writeNow();
+    }
+    catch (const IOerror& e)
+    {
+        Perr<< nl << e << nl;
+    }
+    catch (const error& e)
+    {
+        Perr<< nl << e << nl;
+    }
+    FatalIOError.throwExceptions(ioThrows);
+    FatalError.throwExceptions(throws);
+    caseName = realCase;
+    if (!ok || !isDir(staged, false))
+    {
+        failed("write", staged, why);
+    }
+    syncTree(staged);
+
+    // A directory of that name from an earlier run is replaced: moved
+    // aside first, as rename() does not replace a non-empty directory
+    fileName aside;
+    if (isDir(target, false))
+    {
+        aside = staging/(name + ".replaced");
+        renameOrFail(target, aside);
+    }
+    renameOrFail(staged, target);
+    syncPath(caseDir);
+    if (!aside.empty())
+    {
+        rmDir(aside);
+    }
+    ::rmdir(staging.c_str());
+
+    written_.push(name);
+    while (purgeWrite_ > 0 && written_.size() > purgeWrite_)
+    {
+        rmDir(caseDir/written_.pop());
+    }
+}
+
+} // End namespace Foam
