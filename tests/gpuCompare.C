@@ -390,7 +390,7 @@ int main(int argc, char** argv)
     {
         std::printf("Collapsing pile, section 5.2, to rest at t = 4 s\n");
         return run([](auto r) { return shcases::collapsingPile<decltype(r)>(64); },
-            {0.5, 1, 2, 4}, true, 0);
+            {0.1, 0.5, 1, 2, 4}, true, 0);
     }
     if (which == "lakeAtRest")
     {
@@ -422,7 +422,7 @@ int main(int argc, char** argv)
     {
         std::printf("Collapsing pile with Voellmy friction, 64x64, t = 2 s\n");
         return run([](auto r) { return shcases::voellmyPile<decltype(r)>(64); },
-            {0.5, 1, 2}, false, 0);
+            {0.1, 0.5, 1, 2}, false, 0);
     }
     std::fprintf(stderr, "usage: gpuCompare damBreak|collapsingPile|"
         "lakeAtRest|inclinedPlane|inflowPlane|granularJet|voellmyPile\n");
