@@ -281,15 +281,51 @@ HostGeometry<Real>::HostGeometry(const Problem<Real>& pb)
         kappa[k] = pb.kappa[i];
     }
 
-    // Topography on the padded grid; ghost cells mirror the interior
-    // (ghost -1 <- cell 0, ghost -2 <- cell 1), as the state's do, so that
-    // a lake at rest meets a wall or an open side at rest
+    // Topography on the padded grid.  Beyond a wall the ghost cells mirror
+    // the interior (ghost -1 <- cell 0, ghost -2 <- cell 1), as the
+    // state's do, so that a lake at rest meets a wall at rest; beyond an
+    // open side (transmissive, inflow) the bed continues linearly, so that
+    // the cells next to it feel its slope (a mirrored bed would give them
+    // a flat reconstructed bed, scheme.H cellSlopes).  x-sides first, then
+    // y-sides over whole padded rows (the corners).
     zb.assign(g.size(), Real(0));
-    for (int j = -ng; j < g.ny + ng; ++j)
+    for (int j = 0; j < g.ny; ++j)
     {
-        for (int i = -ng; i < g.nx + ng; ++i)
+        for (int i = 0; i < g.nx; ++i)
         {
-            zb[g.idx(i, j)] = pb.zb[pb.cell(mirrored(i, g.nx), mirrored(j, g.ny))];
+            zb[g.idx(i, j)] = pb.zb[pb.cell(i, j)];
+        }
+    }
+    const auto ghostBed = [&](int side, int n, int k, auto at)
+    {
+        // k = -1, -2 (low side) or n, n + 1 (high side); at(m): the bed of
+        // interior index m along the side's direction
+        const int m = mirrored(k, n);
+        if (pb.bc.type[side] == BCType::wall || n < 2)
+        {
+            return at(m);
+        }
+        const int e = k < 0 ? 0 : n - 1;        // the edge cell
+        const int e1 = k < 0 ? 1 : n - 2;       // its inner neighbour
+        const Real d = Real(k < 0 ? -k : k - (n - 1));
+        return at(e) + d*(at(e) - at(e1));
+    };
+    for (int j = 0; j < g.ny; ++j)
+    {
+        const auto row = [&](int m) { return zb[g.idx(m, j)]; };
+        for (int k = 1; k <= ng; ++k)
+        {
+            zb[g.idx(-k, j)] = ghostBed(xMin, g.nx, -k, row);
+            zb[g.idx(g.nx - 1 + k, j)] = ghostBed(xMax, g.nx, g.nx - 1 + k, row);
+        }
+    }
+    for (int i = -ng; i < g.nx + ng; ++i)
+    {
+        const auto col = [&](int m) { return zb[g.idx(i, m)]; };
+        for (int k = 1; k <= ng; ++k)
+        {
+            zb[g.idx(i, -k)] = ghostBed(yMin, g.ny, -k, col);
+            zb[g.idx(i, g.ny - 1 + k)] = ghostBed(yMax, g.ny, g.ny - 1 + k, col);
         }
     }
 }
