@@ -11,7 +11,8 @@
     centres computed symmetrically), so the result must be too.
 
     Checks on 64^2 and 128^2 (SH_TEST_FULL=1 adds 256^2; the staticPile
-    tutorial runs 256^2 through the application): the pile slumps; by
+    tutorial runs 256^2 through the application, shortened to 64^2 in
+    ./Alltest): the pile slumps; by
     t = 4 s every momentum is exactly zero, and stays so; volume to
     round-off; x- and y-mirror symmetry bit for bit at every printed time.
 \*---------------------------------------------------------------------------*/
