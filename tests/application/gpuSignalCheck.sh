@@ -1,0 +1,103 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# savageHutterFoam: Savage-Hutter granular avalanche solver
+#
+# Description
+#     Signals on the GPU backend (called by tests/gpuCheck with the bundle
+#     of bin/bundleOpenFOAM, like gpuAppCheck.sh): a dam break on
+#     4096 x 512 cells runs with -backend cuda towards an end time it would
+#     take minutes to reach; SIGUSR1 must write the current state and let
+#     the run go on, SIGTERM must write it and end the run cleanly (exit 0,
+#     "End") within 5 s, although the backend advances in CUDA graphs of
+#     128 steps; a restart from the directory SIGTERM wrote must run.
+#     Prints how long each signal took to be acted on.
+#
+# Usage
+#     gpuSignalCheck.sh <project dir> <work dir>
+#------------------------------------------------------------------------------
+set -u
+project="$1"
+work="$2"
+cd "$project" || exit 1
+rm -rf "$work"
+mkdir -p "$work"
+work="$(cd "$work" && pwd)"
+tar -xJf external/bundle.tar.xz -C "$work" || exit 1
+export PATH="$work/bundle/bin:$PATH"
+export LD_LIBRARY_PATH="$work/bundle/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+export WM_PROJECT_DIR="$work/bundle/OpenFOAM"
+. bin/tools/RunFunctions
+status=0
+pass() { echo "PASS  $*"; }
+fail() { echo "FAIL  $*"; status=1; }
+
+d="$work/signals"
+mkdir -p "$d"
+cp -r "$project/tutorials/damBreak"/{0.orig,constant,system} "$d"/
+cd "$d" || exit 1
+rm -rf constant/polyMesh
+setBlockCells 4096 512
+setEntry system/controlDict endTime 1000
+setEntry system/controlDict writeInterval 1000
+setEntry system/controlDict writeFormat binary
+runApplication blockMesh
+restore0Dir
+[ -f system/setAvalancheFieldsDict ] && runApplication setAvalancheFields
+
+timeDirs() { ls -d [0-9]* 2>/dev/null | grep -E '^[0-9.e+-]+$' | grep -v '^0$' | sort -g; }
+now() { date +%s.%N; }
+
+savageHutterFoam -backend cuda > log.savageHutterFoam 2>&1 &
+pid=$!
+for _ in $(seq 1 600); do
+    grep -q "Starting time loop" log.savageHutterFoam 2>/dev/null && break
+    sleep 0.1
+done
+sleep 3
+
+# SIGUSR1: write and go on
+kill -USR1 "$pid"
+t0=$(now)
+for _ in $(seq 1 100); do
+    [ -n "$(timeDirs)" ] && break
+    sleep 0.1
+done
+t1=$(now)
+first="$(timeDirs | tail -n1)"
+if [ -n "$first" ] && [ -f "$first/h" ] && kill -0 "$pid" 2>/dev/null; then
+    pass "SIGUSR1: wrote $first in $(awk -v a="$t0" -v b="$t1" 'BEGIN{printf "%.2f", b - a}') s, run goes on"
+else
+    fail "SIGUSR1: no time directory within 10 s, or the run stopped"
+fi
+
+sleep 2
+kill -TERM "$pid"
+t0=$(now)
+wait "$pid"
+rc=$?
+t1=$(now)
+took="$(awk -v a="$t0" -v b="$t1" 'BEGIN{printf "%.2f", b - a}')"
+last="$(timeDirs | tail -n1)"
+if [ "$rc" -eq 0 ] && grep -q "^End" log.savageHutterFoam \
+   && [ "$last" != "$first" ] && [ -f "$last/h" ] && [ -f "$last/hMax" ] \
+   && awk -v t="$took" 'BEGIN{exit !(t < 5)}'; then
+    pass "SIGTERM: wrote $last and ended (exit 0, End) in $took s"
+else
+    fail "SIGTERM: exit $rc after $took s, last time directory '$last'"
+    tail -n 20 log.savageHutterFoam
+fi
+grep -E "Cell updates per second|Time loop" log.savageHutterFoam | sed 's/^/      /'
+
+# A restart from what SIGTERM wrote
+setEntry system/controlDict startFrom latestTime
+setEntry system/controlDict endTime "$(awk -v t="$last" 'BEGIN{print t + 0.05}')"
+setEntry system/controlDict writeInterval 0.05
+if savageHutterFoam -backend cuda > log.restart 2>&1 && grep -q "^End" log.restart; then
+    pass "restart from $last: runs to $(timeDirs | tail -n1)"
+else
+    fail "restart from $last failed"
+    tail -n 20 log.restart
+fi
+
+[ $status -eq 0 ] && echo "gpuSignalCheck: OK" || echo "gpuSignalCheck: FAILED"
+exit $status
