@@ -868,6 +868,47 @@ else
     fail "live controlDict: nextWrite rc $rcNext dir '$nextDir'; noWriteNow rc $rcNo, written off the grid:${offGrid:- none} (see $log, $log2)"
 fi
 
+# writeControl adjustableRunTime -> timeStep (every 20 steps) during the
+# run: the directories written after the change are those of time indices
+# that are multiples of 20 (uniform/time: index), as Time writes them
+d=$(liveCase liveWriteControl)
+log="$d/log.savageHutterFoam"
+(cd "$d" && exec savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1) &
+pid=$!
+waitFor "$log" "^Starting time loop" 60
+sleep 0.3
+liveEdit "$d" writeControl timeStep writeInterval 20
+waitFor "$log" "^controlDict changed at t = .* writeControl timeStep, writeInterval 0.05 -> 20;" 20
+tChange=$(sed -n 's/^controlDict changed at t = \([^:]*\):.*writeControl timeStep.*/\1/p' "$log")
+before=$(timeDirs "$d" | wc -l)
+waitFor "$log" "^Time = " 5
+for i in $(seq 100)
+do
+    [ "$(timeDirs "$d" | wc -l)" -ge $((before + 3)) ] && break
+    sleep 0.1
+done
+liveEdit "$d" stopAt writeNow
+waitFor "$log" "^End" 60 || kill -TERM "$pid"
+wait "$pid"
+rc=$?
+stopDir=$(sed -n 's/^Stopped by stopAt writeNow at t = .*, written to \([^ ]*\) .*/\1/p' "$log")
+bad=""
+stepDirs=0
+for t in $(timeDirs "$d")
+do
+    python3 -c "import sys; sys.exit(not $t > ${tChange:-1e9})" || continue
+    [ "$t" = "$stopDir" ] && continue
+    idx=$(sed -n 's/^index *\([0-9]*\);/\1/p' "$d/$t/uniform/time")
+    stepDirs=$((stepDirs + 1))
+    [ -n "$idx" ] && [ $((idx % 20)) -eq 0 ] || bad="$bad $t(index $idx)"
+done
+if [ $rc -eq 0 ] && [ -n "$tChange" ] && [ "$stepDirs" -ge 2 ] && [ -z "$bad" ]
+then
+    pass "live controlDict: writeControl adjustableRunTime -> timeStep 20 at t = $tChange: $stepDirs directories after it, each at a time index that is a multiple of 20"
+else
+    fail "live controlDict: writeControl change at '$tChange', rc $rc, $stepDirs directories after it, off the index grid:${bad:- none} (see $log)"
+fi
+
 # A latest time directory cut short (an older version killed while
 # writing, an edit): the restart stops naming the file and line and says
 # what to remove; nothing is written
@@ -935,23 +976,89 @@ then
 else
     fail "write fails: rc $rc, message, 0.05 intact $intact, or directories $(timeDirs "$d" | tr '\n' ' ') (see $log)"
 fi
+# -- A read-only case directory: the run stops at once naming it, nothing
+#    is written, the earlier time directories stay.  As root permissions
+#    do not stop writes: a read-only bind mount does (skipped, saying why,
+#    where mounting is not allowed)
+d=$(newCase readOnly)
+setEntry "$d/system/controlDict" endTime 0.05
+(cd "$d" && savageHutterFoam -backend cpu > log.1 2>&1)
+setEntry "$d/system/controlDict" endTime 0.1
+setEntry "$d/system/controlDict" startFrom latestTime
+roLog="$work/readOnly.log"
+made=""
 if [ "$(id -u)" -eq 0 ]
 then
-    echo "SKIP  read-only case directory: running as root, which writes whatever the permissions say"
-else
-    d=$(newCase readOnly)
-    chmod a-w "$d"
-    (cd "$d" && savageHutterFoam -backend cpu > /tmp/readOnly.$$.log 2>&1)
-    rc=$?
-    chmod u+w "$d"
-    if [ $rc -ne 0 ] && grep -q "FOAM FATAL" /tmp/readOnly.$$.log \
-    && grep -q "$d" /tmp/readOnly.$$.log && [ -z "$(timeDirs "$d")" ]
+    if mount --bind "$d" "$d" 2>/dev/null && mount -o remount,ro,bind "$d" 2>/dev/null
     then
-        pass "read-only case directory: stops naming the path, writes nothing"
+        made=mount
     else
-        fail "read-only case directory: rc $rc (see /tmp/readOnly.$$.log)"
+        umount "$d" 2>/dev/null
     fi
-    rm -f /tmp/readOnly.$$.log
+else
+    chmod a-w "$d" && made=chmod
+fi
+if [ -z "$made" ]
+then
+    echo "SKIP  read-only case directory: as root, and a read-only bind mount is not allowed here"
+else
+    cp -r "$d/0.05" "$work/readOnly.0.05"
+    (cd "$d" && savageHutterFoam -backend cpu > "$roLog" 2>&1)
+    rc=$?
+    [ "$made" = mount ] && umount "$d" || chmod u+w "$d"
+    if [ $rc -ne 0 ] && grep -q "FOAM FATAL" "$roLog" \
+    && grep -q "Cannot write into the case directory \"$d\"" "$roLog" \
+    && ! grep -q "Starting time loop" "$roLog" \
+    && ! grep -qE "printStack|^#[0-9]+ " "$roLog" \
+    && [ "$(timeDirs "$d")" = "0.05" ] && diff -r "$work/readOnly.0.05" "$d/0.05" > /dev/null
+    then
+        pass "read-only case directory ($made): stops before the time loop naming it; 0.05 intact, nothing written"
+    else
+        fail "read-only case directory ($made): rc $rc (see $roLog)"
+    fi
+fi
+
+# -- A full disk (a small tmpfs, where mounting is allowed): the write
+#    that does not fit stops the run naming the path, the earlier time
+#    directory stays intact, the next start (with room) clears the rest
+fs="$work/fullDisk"
+mkdir -p "$fs"
+if [ "$(id -u)" -eq 0 ] && mount -t tmpfs -o size=64m tmpfs "$fs" 2>/dev/null
+then
+    d="$fs/case"
+    cp -r "$base" "$d"
+    rm -f "$d"/log.*
+    setEntry "$d/system/controlDict" endTime 0.05
+    (cd "$d" && savageHutterFoam -backend cpu > "$work/fullDisk.1.log" 2>&1)
+    cp -r "$d/0.05" "$work/fullDisk.0.05"
+    setEntry "$d/system/controlDict" endTime 0.1
+    setEntry "$d/system/controlDict" startFrom latestTime
+    used=$(du -sk "$fs" | cut -f1)
+    one=$(du -sk "$d/0.05" | cut -f1)
+    # Room for half a time directory more
+    mount -o remount,size=$((used + one/2 + 8))k "$fs"
+    (cd "$d" && savageHutterFoam -backend cpu > "$work/fullDisk.2.log" 2>&1)
+    rc=$?
+    log="$work/fullDisk.2.log"
+    if [ $rc -ne 0 ] && grep -q "FOAM FATAL" "$log" \
+    && grep -q "Cannot write .*fullDisk/case/.savageHutterFoam-writing/0.1" "$log" \
+    && ! grep -qE "printStack|^#[0-9]+ " "$log" \
+    && diff -r "$work/fullDisk.0.05" "$d/0.05" > /dev/null && [ ! -d "$d/0.1" ]
+    then
+        mount -o remount,size=64m "$fs"
+        (cd "$d" && savageHutterFoam -backend cpu > "$work/fullDisk.3.log" 2>&1)
+        if complete "$d" 0.1 && [ ! -d "$d/.savageHutterFoam-writing" ]
+        then
+            pass "full disk (tmpfs): stops naming .savageHutterFoam-writing/0.1, 0.05 intact; with room again the next start writes 0.1"
+        else
+            fail "full disk: the start after it did not write 0.1 (see $work/fullDisk.3.log)"
+        fi
+    else
+        fail "full disk: rc $rc, message or 0.05 intact (see $log)"
+    fi
+    umount "$fs"
+else
+    echo "SKIP  full disk on a tmpfs: mounting is not allowed here (the ulimit -f test above stands in)"
 fi
 
 # -- A restart whose U was edited after the write uses h U, not the stale hU --

@@ -103,6 +103,7 @@ int main(int argc, char *argv[])
     autoPtr<avalancheCase> acPtr = readCase(runTime, mesh);
     avalancheCase& ac = acPtr();
     removeIncompleteWrites(runTime);
+    checkWritable(runTime);
     runSignals::install();
 
     // Restarts continue exactly only from states written to full precision

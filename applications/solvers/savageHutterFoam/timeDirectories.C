@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace Foam
@@ -96,6 +97,23 @@ void removeIncompleteWrites(const Time& runTime)
     {
         failed("remove", staging);
     }
+}
+
+
+void checkWritable(const Time& runTime)
+{
+    const fileName staging = runTime.path()/stagingDirName;
+    if (::mkdir(staging.c_str(), 0777) != 0 && errno != EEXIST)
+    {
+        const std::string why = std::strerror(errno);
+        FatalErrorInFunction
+            << "Cannot write into the case directory " << runTime.path()
+            << ": creating " << staging << " failed: " << why.c_str() << nl
+            << "Nothing was written; make the case directory writable"
+            << " (or copy the case to a writable place) and start again."
+            << nl << exit(FatalError);
+    }
+    rmDir(staging);
 }
 
 
