@@ -180,6 +180,28 @@ caseInput::caseInput(const fvMesh& mesh)
 
     // controlDict: the CFL number of eq. (24) and the output times
     control = controlSettings::read(mesh.time().controlDict());
+    // startFrom startTime names the directory to read: say so when it is
+    // not there (rather than a missing file <startTime>/h)
+    if
+    (
+        control.startFrom == "startTime"
+     && !isDir(mesh.time().timePath())
+    )
+    {
+        const entry* e =
+            mesh.time().controlDict().findEntry("startTime", keyType::LITERAL);
+        FatalIOErrorInFunction(mesh.time().controlDict())
+            << "startTime " << mesh.time().timeName().c_str();
+        if (e)
+        {
+            FatalIOError << " at line " << e->startLineNumber();
+        }
+        FatalIOError
+            << " (startFrom startTime): no time directory "
+            << mesh.time().timePath().c_str() << nl
+            << "Valid values: the time of an existing time directory,"
+            << " or startFrom latestTime" << nl << exit(FatalIOError);
+    }
     adjustTimeStep = control.adjustTimeStep;
     deltaT = control.deltaT;
     maxDeltaT = control.maxDeltaT;
