@@ -385,18 +385,6 @@ classify()
 # in the table; one that stops being BAD prints a PASS line asking for its
 # removal from this list.
 known="
-savageHutterFoam:constant/transportProperties:g:huge
-savageHutterFoam:constant/transportProperties:epsilon:huge
-savageHutterFoam:system/controlDict:endTime:huge
-savageHutterFoam:0/h:internalField:huge
-savageHutterFoam:0/U:internalField:huge
-setAvalancheFields:system/setAvalancheFieldsDict:h/damBreak:wrongType
-setAvalancheFields:system/setAvalancheFieldsDict:h/damBreak:nan
-setAvalancheFields:system/setAvalancheFieldsDict:h/damBreak:negative
-setAvalancheFields:system/setAvalancheFieldsDict:h/damBreak:zero
-setAvalancheFields:system/setAvalancheFieldsDict:h/damBreak:huge
-setAvalancheFields:system/setAvalancheFieldsDict:h/damBreak/upstream:negative
-setAvalancheFields:system/setAvalancheFieldsDict:h/damBreak/downstream:negative
 "
 
 # -- Run the variants ---------------------------------------------------------

@@ -215,7 +215,8 @@ controlSettings controlSettings::read
         "latestTime"
     );
     const scalar zero = 0;
-    const range anyTime{-inf, inf, true, true, false};
+    // Times beyond 1e30 overflow the progress arithmetic (fractions, ETA)
+    const range anyTime{-1e30, 1e30, true, true, false};
     c.startTime = number
     (
         cd, "startTime", anyTime, c.startFrom == "startTime" ? nullptr : &zero,

@@ -149,6 +149,49 @@ PtrList<entry> shapes
     const wordList& valid
 )
 {
+    // A list of shape dictionaries, name ( shape { ... } ... ): anything
+    // else is refused here, before the list reader meets it
+    const entry* e = dict.findEntry(name, keyType::LITERAL);
+    bool isList =
+        e && e->isStream() && e->stream().size()
+     && e->stream()[0].isPunctuation()
+     && e->stream()[0].pToken() == token::BEGIN_LIST;
+    if (isList)
+    {
+        // Each element a word followed by a { ... } dictionary
+        const ITstream& is = e->stream();
+        const auto punct = [&](label i, token::punctuationToken p)
+        {
+            return i < is.size() && is[i].isPunctuation()
+                && is[i].pToken() == p;
+        };
+        label i = 1;
+        while (isList && !punct(i, token::END_LIST))
+        {
+            isList = i + 1 < is.size() && is[i].isWord()
+                  && punct(i + 1, token::BEGIN_BLOCK);
+            label depth = 0;
+            for (i += 1; isList && i < is.size(); ++i)
+            {
+                depth += punct(i, token::BEGIN_BLOCK);
+                depth -= punct(i, token::END_BLOCK);
+                if (depth == 0)
+                {
+                    ++i;
+                    break;
+                }
+            }
+            isList = isList && depth == 0 && i < is.size();
+        }
+    }
+    if (!isList)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Invalid " << name << ": it must be a list of shapes, "
+            << name << " ( <shape> { ... } ... );" << nl
+            << "Valid shapes for " << name << ": " << flatOutput(valid) << nl
+            << exit(FatalIOError);
+    }
     PtrList<entry> list(dict.lookup(name));
     forAll(list, k)
     {
@@ -267,7 +310,9 @@ int main(int argc, char *argv[])
             {
                 FatalIOErrorInFunction(dict)
                     << "The shapes of h give h = " << h[c] << " < 0 in cell "
-                    << c << " at " << C[c] << nl << exit(FatalIOError);
+                    << c << " at " << C[c] << "; check their entries:" << nl
+                    << dict.findEntry("h", keyType::LITERAL)->stream()
+                    << nl << exit(FatalIOError);
             }
         }
         Info<< "Writing h: volume " << gSum(h.primitiveField()*mesh.V()/

@@ -52,9 +52,15 @@ std::string str(double x)
 
 void requireFinite(const std::string& keyword, double x)
 {
-    if (!std::isfinite(x))
+    // Beyond 1e30 the scheme's squares and products of such inputs
+    // overflow (a floating-point exception where OpenFOAM traps them)
+    if (!(std::fabs(x) <= 1e30))
     {
-        throw InputError(keyword, "must be a finite number, got " + str(x));
+        throw InputError
+        (
+            keyword,
+            "must be a finite number of magnitude at most 1e30, got " + str(x)
+        );
     }
 }
 
