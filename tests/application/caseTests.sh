@@ -278,7 +278,7 @@ writeInterval|-|Missing keyword
 deltaT|0|(0, inf)
 deltaT|inf|(0, inf)
 deltaT|-|Missing keyword
-endTime|nan|(-inf, inf)
+endTime|nan|(-1e+30, 1e+30)
 endTime|-|Missing keyword
 endTime|-1|endTime >= 0
 maxDeltaT|0|(0, inf)
@@ -301,7 +301,7 @@ LIST
 
 d=$(newCase controlDictStartTimeNan)
 setRaw "$d/system/controlDict" startTime nan
-expectFailure controlDictStartTimeNan "system/controlDict" "startTime" "(-inf, inf)"
+expectFailure controlDictStartTimeNan "system/controlDict" "startTime" "(-1e+30, 1e+30)"
 
 d=$(newCase controlDictTimeStepFraction)
 setRaw "$d/system/controlDict" writeControl timeStep
