@@ -418,7 +418,7 @@ std::vector<CellK<Real>> schemeCoeffs
         for (int i = 0; i < m.g.nx; ++i)
         {
             const int c = m.g.idx(i, j);
-            K.push_back(cellEarthPressure(m, i, U[c], cellSlopes(m, U, c, 1),
+            K.push_back(cellEarthPressure(m, i, primitive(U[c]), cellSlopes(m, U, c, 1),
                 cellSlopes(m, U, c, m.g.stride())));
         }
     }

@@ -126,21 +126,51 @@ void CpuSolver<Real>::advanceStep(Real dt)
 
     fillGhostCells(m, Uh);
 
-    // Each x-face i+1/2 for i = -1..nx-1, each y-face j+1/2 for j = -1..ny-1
-    #pragma omp parallel for if(parallel_) schedule(static)
-    for (int j = -1; j < ny; ++j)
+    // Each x-face i+1/2 for i = -1..nx-1 of rows 0..ny-1, each y-face
+    // j+1/2 for j = -1..ny-1 of columns 0..nx-1, from the reconstructions
+    // of their two cells, each cell reconstructed once (two rows kept):
+    // every thread takes a band of y-face rows, reconstructing one row
+    // more than its band
+    #pragma omp parallel if(parallel_)
     {
-        for (int i = -1; i < nx; ++i)
+        int t = 0;
+        int nt = 1;
+#ifdef _OPENMP
+        t = omp_get_thread_num();
+        nt = omp_get_num_threads();
+#endif
+        const long rows = ny + 1;
+        const int ja = -1 + int(rows*t/nt);
+        const int jb = -1 + int(rows*(t + 1)/nt);
+        std::vector<CellFaces<Real>> lo(nx + 2), hi(nx + 2);
+        // Row j, cells -1..nx of an interior row, 0..nx-1 of a ghost row
+        const auto reconstructRow = [&](int j, std::vector<CellFaces<Real>>& r)
         {
-            const int c = g.idx(i, j);
+            const bool inner = j >= 0 && j < ny;
+            for (int i = inner ? -1 : 0; i < (inner ? nx + 1 : nx); ++i)
+            {
+                r[i + 1] = reconstructCell(m, Uh, i, j);
+            }
+        };
+        if (ja < jb)
+        {
+            reconstructRow(ja, lo);
+        }
+        for (int j = ja; j < jb; ++j)
+        {
             if (j >= 0)
             {
-                store(Fx, c, fluxX(m, Uh, i, j));
+                for (int i = -1; i < nx; ++i)
+                {
+                    store(Fx, g.idx(i, j), fluxX(m, lo[i + 1], lo[i + 2]));
+                }
             }
-            if (i >= 0)
+            reconstructRow(j + 1, hi);
+            for (int i = 0; i < nx; ++i)
             {
-                store(Fy, c, fluxY(m, Uh, i, j));
+                store(Fy, g.idx(i, j), fluxY(m, lo[i + 1], hi[i + 1]));
             }
+            std::swap(lo, hi);
         }
     }
 
