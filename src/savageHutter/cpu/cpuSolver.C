@@ -45,7 +45,6 @@ CpuSolver<Real>::CpuSolver(const Problem<Real>& pb, bool parallel)
     Unew_.resize(n);
     Fx_.resize(n);
     Fy_.resize(n);
-    theta_.assign(n, Real(1));
 
     U_.h = toPadded(g, pb.h);
     U_.hu = toPadded(g, pb.hu);
@@ -109,7 +108,6 @@ void CpuSolver<Real>::advanceStep(Real dt)
     const Fields<Real> Un = Unew_.view();
     const FaceFields<Real> Fx = Fx_.view();
     const FaceFields<Real> Fy = Fy_.view();
-    Real* theta = theta_.data();
     const int nx = g.nx;
     const int ny = g.ny;
 
@@ -174,22 +172,13 @@ void CpuSolver<Real>::advanceStep(Real dt)
         }
     }
 
-    #pragma omp parallel for if(parallel_) schedule(static)
-    for (int j = 0; j < ny; ++j)
-    {
-        for (int i = 0; i < nx; ++i)
-        {
-            theta[g.idx(i, j)] = drainFactor(m, U, Fx, Fy, dt, i, j);
-        }
-    }
-
     long long clips = 0;
     #pragma omp parallel for if(parallel_) reduction(+:clips) schedule(static)
     for (int j = 0; j < ny; ++j)
     {
         for (int i = 0; i < nx; ++i)
         {
-            clips += correctorCell(m, U, Uh, Fx, Fy, theta, Un, dt, i, j);
+            clips += correctorCell(m, U, Uh, Fx, Fy, Un, dt, i, j);
         }
     }
     speedClips_ += clips;
