@@ -12,8 +12,8 @@ Description
         ("wet"), so that no cell takes the cheap dry path.
     Backends: CPU serial, CPU on all cores (OpenMP), CUDA.  After the table,
     the GPU's float rate over its double rate, mesh by mesh (the float
-    CUDA backend uses approximate division and square root unless built
-    with SH_CUDA_FLOAT_IEEE=ON; its name says which).
+    CUDA backend uses approximate division and square root when built with
+    SH_CUDA_FLOAT_APPROX=ON; its name says which).
 
     Cell updates per second = cells x steps / wall time of the time loop
     (Solver::advance; set-up and copies of the state excluded).  A CPU run

@@ -14,10 +14,11 @@
     every value of h, hu, hv must be bit-identical, and so must the number
     of steps, the time, the last time step and the diagnostics.
 
-    Float: the CUDA backend is compiled with the hardware's approximate
-    division and square root (cuda/cudaSolverFloat.cu; a build configured
-    with SH_CUDA_FLOAT_IEEE=ON makes it IEEE and the float comparison is
-    then bit for bit, as in double).  Approximate, its state differs from
+    Float: by default the CUDA backend is IEEE-rounded in float too, and
+    the float comparison is bit for bit, as in double.  A build configured
+    with SH_CUDA_FLOAT_APPROX=ON compiles the float kernels with the
+    hardware's approximate division and square root
+    (cuda/cudaSolverFloat.cu).  Approximate, its state differs from
     the CPU's float state by round-off, and the test bounds that difference
     by how far the same flow carries a perturbation of one ulp, measured in
     the same run:

@@ -22,11 +22,8 @@ cd "$project" || exit 1
 rm -rf "$work"
 mkdir -p "$work"
 work="$(cd "$work" && pwd)"
-tar -xJf external/bundle.tar.xz -C "$work" || exit 1
-export PATH="$work/bundle/bin:$PATH"
-export LD_LIBRARY_PATH="$work/bundle/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
-export WM_PROJECT_DIR="$work/bundle/OpenFOAM"
-. bin/tools/RunFunctions
+project="$(pwd)"
+. tests/application/bundleEnv.sh || exit 1
 status=0
 pass() { echo "PASS  $*"; }
 fail() { echo "FAIL  $*"; status=1; }

@@ -5,16 +5,17 @@ Description
     The CUDA backend in single precision (kernels and driver in
     cudaSolverImpl.H, the same code as in double).
 
-    Compiled apart from double so that it can take the hardware's
-    approximate division and square root (-prec-div=false -prec-sqrt=false,
-    CMakeLists.txt) without changing a bit of the double backend: the step
-    is bound by instruction issue, and an IEEE-rounded float division is a
-    multi-instruction sequence with a slow-path branch, an approximate one
-    a reciprocal and a multiplication (docs/performance.md).  The float
-    state then differs from the CPU's float state by round-off;
-    tests/gpuCompare.C states and checks the tolerance.  SH_CUDA_FLOAT_IEEE=ON
-    compiles it with IEEE-rounded division and square root instead, and it
-    is then bit-identical to the CPU as double is.
+    Compiled apart from double so that it can take other flags without
+    changing a bit of the double backend.  By default it is IEEE-rounded
+    and bit-identical to the CPU's float run, as double is.
+    SH_CUDA_FLOAT_APPROX=ON (CMakeLists.txt) gives it the hardware's
+    approximate division and square root (-prec-div=false
+    -prec-sqrt=false): an IEEE-rounded float division is a multi-
+    instruction sequence with a slow-path branch, an approximate one a
+    reciprocal and a multiplication.  The float state then differs from
+    the CPU's float state by round-off; tests/gpuCompare.C states and
+    checks the tolerance.  Since the divisions were cut (issue 11) the
+    approximate build gains little (docs/performance.md).
 \*---------------------------------------------------------------------------*/
 
 #include "cudaSolverImpl.H"
