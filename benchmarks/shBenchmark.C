@@ -31,6 +31,10 @@ Description
       -cpuWall S            wall budget of one CPU run on a Table IV mesh
       -cpuWallLarge S       the same on the large meshes
       -noCpu                GPU only
+      -huge K               also the wet mesh K x K x (30 x 14) on the GPU
+                            alone (K = 1544: 1.0e9 cells), to t = hugeTime,
+                            with the device memory it takes per cell
+      -hugeTime T           end time of the huge run (default 1e-3)
       -profile K            three steps on mesh K, for ncu (no timing)
       -profileCase wet|dry  the case -profile runs (default wet)
       -out FILE             also write the table (markdown) to FILE
@@ -67,6 +71,8 @@ struct Options
     bool cpu = true;
     int profile = 0;
     bool profileWet = true;
+    int huge = 0;
+    double hugeTime = 1e-3;
     std::string out;
 };
 
@@ -110,6 +116,17 @@ struct Result
 };
 
 std::vector<Result> results;
+
+//- Device memory a run took: cells, bytes, device total
+struct MemoryRow
+{
+    std::string precision;
+    std::string mesh;
+    long cells;
+    double bytes;
+    double total;
+};
+std::vector<MemoryRow> memoryRows;
 
 template<class Real>
 sh::Problem<Real> wetPlane(int k)
@@ -163,13 +180,13 @@ std::string meshName(int k, int nx, int ny, bool wet)
 }
 
 template<class Real>
-void runMesh(const Options& o, int k, bool large, bool wet)
+void runMesh(const Options& o, int k, bool large, bool wet, double tLarge)
 {
     const char* prec = sizeof(Real) == 8 ? "double" : "float";
     const sh::Problem<Real> pb =
         wet ? wetPlane<Real>(k) : shcases::inclinedPlane<Real>(k);
     const long cells = long(pb.grid.nx)*pb.grid.ny;
-    const double tEnd = large ? o.largeTime : 24;
+    const double tEnd = large ? tLarge : 24;
     const std::string mesh = meshName(k, pb.grid.nx, pb.grid.ny, wet);
     std::fprintf(stderr, "== %s %s, t = 0..%g\n", prec, mesh.c_str(), tEnd);
 
@@ -178,8 +195,18 @@ void runMesh(const Options& o, int k, bool large, bool wet)
     std::string why;
     if (cudaAvailable(&why))
     {
+        std::size_t free0 = 0, free1 = 0, total = 0;
+        cudaMemoryInfo(&free0, &total);
         std::unique_ptr<Solver<Real>> gpu = makeCudaSolver(pb);
         gpu->stableDt();    // context and module loaded before timing
+        if (cudaMemoryInfo(&free1, &total) && large)
+        {
+            memoryRows.push_back
+            (
+                {prec, meshName(k, pb.grid.nx, pb.grid.ny, wet), cells,
+                 double(free0) - double(free1), double(total)}
+            );
+        }
         rows.push_back(timeRun(*gpu, tEnd, 1e300, cells));
         gpuSteps = rows.back().steps;
     }
@@ -295,6 +322,20 @@ std::string table()
             }
         }
     }
+    if (!memoryRows.empty())
+    {
+        os << "\nDevice memory of the GPU runs (free memory before the "
+              "solver was made less after):\n\n"
+              "| precision | mesh | cells | device memory [GB] | bytes/cell "
+              "| device total [GB] |\n|---|---|---:|---:|---:|---:|\n";
+        for (const MemoryRow& m : memoryRows)
+        {
+            std::snprintf(buf, sizeof buf, "| %s | %s | %ld | %.2f | %.1f | %.2f |\n",
+                m.precision.c_str(), m.mesh.c_str(), m.cells, m.bytes*1e-9,
+                m.bytes/double(m.cells), m.total*1e-9);
+            os << buf;
+        }
+    }
     if (!ratios.str().empty())
     {
         os << "\nGPU, float against double:\n\n"
@@ -361,6 +402,8 @@ int main(int argc, char** argv)
         else if (arg == "-cpuWallLarge") { o.cpuWallLarge = std::atof(need()); }
         else if (arg == "-noCpu") { o.cpu = false; }
         else if (arg == "-profile") { o.profile = std::atoi(need()); }
+        else if (arg == "-huge") { o.huge = std::atoi(need()); }
+        else if (arg == "-hugeTime") { o.hugeTime = std::atof(need()); }
         else if (arg == "-out") { o.out = need(); }
         else if (arg == "-profileCase")
         {
@@ -397,16 +440,23 @@ int main(int argc, char** argv)
         if ((dbl && !o.dbl) || (!dbl && !o.flt)) { continue; }
         for (const int k : o.meshes)
         {
-            dbl ? runMesh<double>(o, k, false, false)
-                : runMesh<float>(o, k, false, false);
+            dbl ? runMesh<double>(o, k, false, false, 24)
+                : runMesh<float>(o, k, false, false, 24);
         }
         if (o.large > 0)
         {
             for (const bool wet : {false, true})
             {
-                dbl ? runMesh<double>(o, o.large, true, wet)
-                    : runMesh<float>(o, o.large, true, wet);
+                dbl ? runMesh<double>(o, o.large, true, wet, o.largeTime)
+                    : runMesh<float>(o, o.large, true, wet, o.largeTime);
             }
+        }
+        if (o.huge > 0)
+        {
+            Options gpuOnly = o;
+            gpuOnly.cpu = false;
+            dbl ? runMesh<double>(gpuOnly, o.huge, true, true, o.hugeTime)
+                : runMesh<float>(gpuOnly, o.huge, true, true, o.hugeTime);
         }
     }
 

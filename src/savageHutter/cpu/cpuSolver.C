@@ -20,8 +20,11 @@ void store(const FaceFields<Real>& F, int c, const FaceFlux<Real>& f)
     F.h[c] = f.F.h;
     F.hu[c] = f.F.hu;
     F.hv[c] = f.F.hv;
-    F.bedLow[c] = f.bedLow;
-    F.bedHigh[c] = f.bedHigh;
+    if (F.bedLow)
+    {
+        F.bedLow[c] = f.bedLow;
+        F.bedHigh[c] = f.bedHigh;
+    }
 }
 
 } // namespace
@@ -43,8 +46,8 @@ CpuSolver<Real>::CpuSolver(const Problem<Real>& pb, bool parallel)
     U_.resize(n);
     Uh_.resize(n);
     Unew_.resize(n);
-    Fx_.resize(n);
-    Fy_.resize(n);
+    Fx_.resize(n, !geometry_.constantBed());
+    Fy_.resize(n, !geometry_.constantBed());
 
     U_.h = toPadded(g, pb.h);
     U_.hu = toPadded(g, pb.hu);

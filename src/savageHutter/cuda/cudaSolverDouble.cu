@@ -3,7 +3,7 @@
 
 Description
     The CUDA backend in double precision (kernels and driver in
-    cudaSolverImpl.H), and cudaAvailable().
+    cudaSolverImpl.H), cudaAvailable() and cudaMemoryInfo().
 
     Compiled with IEEE correctly rounded division and square root (nvcc's
     default) and --fmad=false (CMakeLists.txt), like the CPU backend, so
@@ -14,6 +14,57 @@ Description
 
 namespace sh
 {
+
+std::string cudaDeviceDescription(int* fp32PerFp64)
+{
+    int dev = 0;
+    cudaDeviceProp p;
+    if
+    (
+        cudaGetDevice(&dev) != cudaSuccess
+     || cudaGetDeviceProperties(&p, dev) != cudaSuccess
+    )
+    {
+        cudaGetLastError();
+        return std::string();
+    }
+    int ratio = 0;
+    if
+    (
+        cudaDeviceGetAttribute
+        (
+            &ratio, cudaDevAttrSingleToDoublePrecisionPerfRatio, dev
+        ) != cudaSuccess
+    )
+    {
+        cudaGetLastError();
+        ratio = 0;
+    }
+    if (fp32PerFp64)
+    {
+        *fp32PerFp64 = ratio;
+    }
+    return std::string(p.name) + ", compute capability "
+        + std::to_string(p.major) + "." + std::to_string(p.minor) + ", "
+        + std::to_string((p.totalGlobalMem + (1u << 29))>>30) + " GiB"
+        + (ratio > 0 ? ", FP32:FP64 " + std::to_string(ratio) + ":1" : "");
+}
+
+
+bool cudaMemoryInfo(std::size_t* freeBytes, std::size_t* totalBytes)
+{
+    std::size_t f = 0;
+    std::size_t t = 0;
+    if (cudaMemGetInfo(&f, &t) != cudaSuccess)
+    {
+        cudaGetLastError();
+        return false;
+    }
+    *freeBytes = f;
+    *totalBytes = t;
+    return true;
+}
+
 
 bool cudaAvailable(std::string* why)
 {

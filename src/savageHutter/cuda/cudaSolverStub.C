@@ -34,6 +34,18 @@ bool cudaAvailable(std::string* why)
 }
 
 
+std::string cudaDeviceDescription(int*)
+{
+    return std::string();
+}
+
+
+bool cudaMemoryInfo(std::size_t*, std::size_t*)
+{
+    return false;
+}
+
+
 bool cudaFloatApproximate()
 {
     return false;

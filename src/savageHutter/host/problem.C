@@ -359,6 +359,20 @@ HostPeaks<Real>::HostPeaks(const Problem<Real>& pb)
 
 template struct Problem<double>;
 template struct Problem<float>;
+template<class Real>
+bool HostGeometry<Real>::constantBed() const
+{
+    for (const Real z : zb)
+    {
+        if (!(z == zb[0]))
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
+
 template struct HostGeometry<double>;
 template struct HostGeometry<float>;
 template struct HostPeaks<double>;
