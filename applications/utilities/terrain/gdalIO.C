@@ -268,6 +268,11 @@ std::vector<Polygon> readPolygons(const std::string& path)
             {
                 pts.push_back({ring->getX(i), ring->getY(i)});
             }
+            // A closed ring repeats its first point
+            if (pts.size() > 1 && pts.front() == pts.back())
+            {
+                pts.pop_back();
+            }
             poly.push_back(pts);
         }
         if (!poly.empty())

@@ -293,7 +293,8 @@ int main(int argc, char *argv[])
         if (!std::isfinite(Zraw[k]))
         {
             FatalIOErrorInFunction(dict)
-                << "keyword 'axis': the axis " << axis << " leaves the DEM"
+                << "keyword 'axis': the axis from " << axis[0] << " to "
+                << axis[1] << " leaves the DEM"
                 << " or crosses nodata at " << P << " (distance " << k*dS
                 << " m from its first point); the DEM " << demFile
                 << " covers X in [" << demX0 << ", " << demX1
@@ -567,7 +568,7 @@ int main(int argc, char *argv[])
                                       + std::to_string(xMax) + "], y in [-"
                                       + std::to_string(yMax) + ", "
                                       + std::to_string(yMax) + "]"
-                                    : std::string("outside the DEM"))
+                                    : std::string("outside the DEM")).c_str()
                                 << nl << exit(FatalIOError);
                         }
                         xy.push_back({x, y});
