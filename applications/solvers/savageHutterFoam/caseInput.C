@@ -54,7 +54,7 @@ const wordList solverKeywords
 const wordList transportKeywords
 ({
     "g", "epsilon", "lambda", "inclination", "earthPressure", "phi",
-    "frictionModel"
+    "frictionModel", "rho"
 });
 
 } // namespace
@@ -121,6 +121,18 @@ caseInput::caseInput(const fvMesh& mesh)
         readChoice(tp, "earthPressure", sh::earthPressureNames())
     );
     model.phiDeg = tp.get<scalar>("phi");
+    // rho: only for the peak pressure of the hazard maps (design.md 5)
+    if (tp.found("rho"))
+    {
+        const scalar rho = tp.get<scalar>("rho");
+        if (!(rho > 0 && rho <= 1e30))
+        {
+            FatalIOErrorInFunction(tp)
+                << "rho = " << rho << ": the density [kg/m^3] must be"
+                << " positive and at most 1e30" << nl << exit(FatalIOError);
+        }
+        Info<< "    rho           " << rho << " kg/m^3 (peak pressure)" << nl;
+    }
 
     friction_ = frictionModel::New(tp);
     friction_->set(model);

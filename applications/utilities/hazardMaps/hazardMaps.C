@@ -1,0 +1,430 @@
+/*---------------------------------------------------------------------------*\
+  savageHutterFoam: Savage-Hutter granular avalanche solver
+
+Application
+    hazardMaps
+
+Description
+    Hazard maps of a terrain case (made by terrainToCase) on the DEM's grid
+    and georeference, and a report of volumes, runout and travel angles.
+    Run in the case directory after savageHutterFoam; reads
+    constant/terrainMapping and, at the chosen time (default the latest),
+    hMax, UMax, h and zb, and pMax and tArrival when the solver wrote them.
+    Without a pMax field and with rho in constant/transportProperties,
+    pMax = rho UMax^2 (exact: the peak of |u|^2 is the square of the peak
+    of |u|).
+
+    Writes postProcessing/hazardMaps/<time>/:
+        hMax, UMax, pMax, deposit (h at that time), tArrival
+                        as .asc and .tif: each DEM pixel takes the value of
+                        the mesh cell that holds the foot of its normal on
+                        the reference surface; nodata (-9999) outside the
+                        mesh and where hMax <= threshold (outside the flow)
+        report.dat      lines "key value":
+            releasedVolume  sum of h dA at the first time directory [m^3]
+            depositVolume   sum of h dA at the chosen time [m^3]
+            runoutX/Y/Z     world position of the bed in the cell furthest
+                            along the axis with hMax > threshold (of that
+                            row of cells, the one with the largest hMax)
+            travelAngle     [deg] atan(drop / horizontal distance) from the
+                            highest released point to the runout point
+            comTravelAngle  [deg] the same between the centres of mass of
+                            the release and of the material at that time
+
+Usage
+    hazardMaps [-time <time>] [-threshold 0.01]
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "vector2D.H"
+#include "OSspecific.H"
+
+#include "gdalIO.H"
+#include "referenceSurface.H"
+
+#include <fstream>
+#include <iomanip>
+
+using namespace Foam;
+
+namespace
+{
+
+IOobject fieldIO(const fvMesh& mesh, const word& instance, const word& name)
+{
+    return IOobject
+    (
+        name, instance, mesh, IOobject::MUST_READ, IOobject::NO_WRITE
+    );
+}
+
+bool hasField(const fvMesh& mesh, const word& instance, const word& name)
+{
+    return fieldIO(mesh, instance, name).typeHeaderOk<volScalarField>(true);
+}
+
+//- The world position of cell c's bed
+terrain::vec3 bedPoint
+(
+    const terrain::referenceSurface& s, const point& C, scalar zb
+)
+{
+    return s.world(C.x(), C.y(), zb);
+}
+
+scalar travelAngle(const terrain::vec3& a, const terrain::vec3& b)
+{
+    const scalar dist = std::hypot(b[0] - a[0], b[1] - a[1]);
+    return radToDeg(std::atan2(a[2] - b[2], dist));
+}
+
+} // namespace
+
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Hazard maps (hMax, UMax, pMax, deposit, tArrival) of a terrain case"
+        " as rasters on the DEM's grid, and a runout report"
+    );
+    argList::addOption("time", "time", "the time to map (default: latest)");
+    argList::addOption
+    (
+        "threshold", "scalar",
+        "hMax [m] above which a cell belongs to the flow (default 0.01)"
+    );
+    argList::noParallel();
+    argList::noFunctionObjects();
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+
+    const scalar threshold = args.getOrDefault<scalar>("threshold", 0.01);
+    if (!(threshold >= 0) || !(threshold < 1e30))
+    {
+        FatalErrorInFunction
+            << "-threshold " << threshold << ": must be finite and >= 0"
+            << nl << exit(FatalError);
+    }
+
+    instantList times = runTime.times();
+    // Only numeric time directories (times() also lists constant)
+    instantList numeric;
+    for (const instant& t : times)
+    {
+        if (t.name() != runTime.constant())
+        {
+            numeric.append(t);
+        }
+    }
+    if (numeric.empty())
+    {
+        FatalErrorInFunction
+            << "No time directory in " << runTime.path() << nl
+            << exit(FatalError);
+    }
+    instant chosen = numeric.last();
+    if (args.found("time"))
+    {
+        const word want = args.get<word>("time");
+        bool found = false;
+        for (const instant& t : numeric)
+        {
+            if (t.name() == want || t.equal(readScalar(want)))
+            {
+                chosen = t;
+                found = true;
+            }
+        }
+        if (!found)
+        {
+            FatalErrorInFunction
+                << "-time " << want << ": no such time directory; times: "
+                << flatOutput(numeric) << nl << exit(FatalError);
+        }
+    }
+    runTime.setTime(chosen, 0);
+    const word first = numeric.first().name();
+    Info<< "Time " << chosen.name() << " (release from time " << first << ")"
+        << nl << endl;
+
+    #include "createMesh.H"
+
+    // -- The terrain mapping and the DEM ------------------------------------
+    const IOdictionary mapDict
+    (
+        IOobject
+        (
+            "terrainMapping", runTime.constant(), runTime,
+            IOobject::MUST_READ, IOobject::NO_WRITE
+        )
+    );
+    const List<vector2D> table = mapDict.get<List<vector2D>>("inclination");
+    std::vector<double> xT, zT;
+    for (const vector2D& p : table)
+    {
+        xT.push_back(p.x());
+        zT.push_back(p.y());
+    }
+    const vector o = mapDict.get<vector>("origin");
+    const vector2D t = mapDict.get<vector2D>("tangent");
+    const terrain::referenceSurface surface
+    (
+        {o.x(), o.y(), o.z()}, t.x(), t.y(), xT, zT
+    );
+    const scalar cellSize = mapDict.get<scalar>("cellSize");
+    const label nx = mapDict.get<label>("nx");
+    const label ny = mapDict.get<label>("ny");
+    const scalar yMin = mapDict.get<scalar>("yMin");
+    if (mesh.nCells() != nx*ny)
+    {
+        FatalIOErrorInFunction(mapDict)
+            << "nx " << nx << " x ny " << ny << " cells, but the mesh has "
+            << mesh.nCells() << ": run blockMesh after terrainToCase" << nl
+            << exit(FatalIOError);
+    }
+    fileName demFile = mapDict.get<fileName>("dem");
+    demFile.expand();
+    if (!demFile.isAbsolute())
+    {
+        demFile = runTime.path()/demFile;
+    }
+    terrain::Raster dem;
+    try
+    {
+        dem = terrain::readRaster(demFile);
+    }
+    catch (const terrain::gdalError& e)
+    {
+        FatalIOErrorInFunction(mapDict)
+            << "keyword 'dem': " << e.what() << nl << exit(FatalIOError);
+    }
+
+    // Mesh cell of each (i, j) of the structured grid
+    labelList cellOf(nx*ny, -1);
+    const volVectorField& C = mesh.C();
+    forAll(C, c)
+    {
+        const label i = label(std::floor(C[c].x()/cellSize));
+        const label j = label(std::floor((C[c].y() - yMin)/cellSize));
+        if (i >= 0 && i < nx && j >= 0 && j < ny)
+        {
+            cellOf[i + nx*j] = c;
+        }
+    }
+
+    // -- Fields --------------------------------------------------------------
+    const word now = runTime.timeName();
+    for (const word& name : {"hMax", "UMax", "h"})
+    {
+        if (!hasField(mesh, now, name))
+        {
+            FatalErrorInFunction
+                << "No field " << name << " in " << runTime.path()/now
+                << " (hMax and UMax are written by savageHutterFoam)" << nl
+                << exit(FatalError);
+        }
+    }
+    const volScalarField hMax(fieldIO(mesh, now, "hMax"), mesh);
+    const volScalarField UMax(fieldIO(mesh, now, "UMax"), mesh);
+    const volScalarField h(fieldIO(mesh, now, "h"), mesh);
+    const volScalarField h0(fieldIO(mesh, first, "h"), mesh);
+    const word zbTime = hasField(mesh, now, "zb") ? now : first;
+    const volScalarField zb(fieldIO(mesh, zbTime, "zb"), mesh);
+
+    HashTable<scalarField> maps;
+    maps.insert("hMax", hMax.primitiveField());
+    maps.insert("UMax", UMax.primitiveField());
+    maps.insert("deposit", h.primitiveField());
+    if (hasField(mesh, now, "pMax"))
+    {
+        maps.insert
+        (
+            "pMax",
+            volScalarField(fieldIO(mesh, now, "pMax"), mesh).primitiveField()
+        );
+    }
+    else
+    {
+        const IOdictionary tp
+        (
+            IOobject
+            (
+                "transportProperties", runTime.constant(), runTime,
+                IOobject::MUST_READ, IOobject::NO_WRITE
+            )
+        );
+        if (tp.found("rho"))
+        {
+            const scalar rho = tp.get<scalar>("rho");
+            if (!(rho > 0) || !(rho < 1e30))
+            {
+                FatalIOErrorInFunction(tp)
+                    << "keyword 'rho' = " << rho << ": must be > 0" << nl
+                    << exit(FatalIOError);
+            }
+            Info<< "pMax = rho UMax^2, rho " << rho << " kg/m^3" << nl;
+            maps.insert("pMax", scalarField(rho*sqr(UMax.primitiveField())));
+        }
+        else
+        {
+            Info<< "No pMax field and no rho in transportProperties:"
+                << " no pMax map" << nl;
+        }
+    }
+    if (hasField(mesh, now, "tArrival"))
+    {
+        maps.insert
+        (
+            "tArrival",
+            volScalarField(fieldIO(mesh, now, "tArrival"), mesh)
+                .primitiveField()
+        );
+    }
+    else
+    {
+        Info<< "No tArrival field: no arrival-time map" << nl;
+    }
+
+    // -- Pixels to cells -----------------------------------------------------
+    labelList pixelCell(dem.nx*dem.ny, -1);
+    for (label j = 0; j < dem.ny; ++j)
+    {
+        for (label i = 0; i < dem.nx; ++i)
+        {
+            const double Z = dem.at(i, j);
+            if (!dem.valid(Z))
+            {
+                continue;
+            }
+            const double X = dem.gt[0] + (i + 0.5)*dem.gt[1];
+            const double Y = dem.gt[3] + (j + 0.5)*dem.gt[5];
+            double x = 0, y = 0, z = 0;
+            if (!surface.local({X, Y, Z}, x, y, z))
+            {
+                continue;
+            }
+            const label ci = label(std::floor(x/cellSize));
+            const label cj = label(std::floor((y - yMin)/cellSize));
+            if (ci >= 0 && ci < nx && cj >= 0 && cj < ny)
+            {
+                const label c = cellOf[ci + nx*cj];
+                if (c >= 0 && hMax[c] > threshold)
+                {
+                    pixelCell[i + dem.nx*j] = c;
+                }
+            }
+        }
+    }
+
+    const fileName outDir =
+        runTime.path()/"postProcessing"/"hazardMaps"/runTime.timeName();
+    mkDir(outDir);
+    for (const word& name : maps.sortedToc())
+    {
+        const scalarField& f = maps[name];
+        terrain::Raster r;
+        r.nx = dem.nx;
+        r.ny = dem.ny;
+        r.gt = dem.gt;
+        r.wkt = dem.wkt;
+        r.hasNodata = true;
+        r.nodata = -9999;
+        r.z.assign(std::size_t(r.nx)*r.ny, r.nodata);
+        forAll(pixelCell, p)
+        {
+            if (pixelCell[p] >= 0)
+            {
+                r.z[p] = f[pixelCell[p]];
+            }
+        }
+        for (const char* ext : {".asc", ".tif"})
+        {
+            const fileName file = outDir/(name + ext);
+            try
+            {
+                terrain::writeRaster(file, r);
+            }
+            catch (const terrain::gdalError& e)
+            {
+                FatalErrorInFunction
+                    << e.what() << nl << exit(FatalError);
+            }
+        }
+        Info<< "Wrote " << name << " (.asc, .tif): range ["
+            << gMin(f) << ", " << gMax(f) << "]" << nl;
+    }
+
+    // -- Report ---------------------------------------------------------------
+    const scalar cellArea = cellSize*cellSize;
+    scalar released = 0, deposit = 0;
+    terrain::vec3 top{0, 0, -GREAT}, com0{0, 0, 0}, com1{0, 0, 0};
+    label runoutCell = -1;
+    forAll(C, c)
+    {
+        const terrain::vec3 W = bedPoint(surface, C[c], zb[c]);
+        released += h0[c]*cellArea;
+        deposit += h[c]*cellArea;
+        for (int k = 0; k < 3; ++k)
+        {
+            com0[k] += h0[c]*W[k];
+            com1[k] += h[c]*W[k];
+        }
+        if (h0[c] > 0 && W[2] > top[2])
+        {
+            top = W;
+        }
+        if (hMax[c] > threshold)
+        {
+            if
+            (
+                runoutCell < 0
+             || C[c].x() > C[runoutCell].x() + 0.5*cellSize
+             || (
+                    C[c].x() > C[runoutCell].x() - 0.5*cellSize
+                 && hMax[c] > hMax[runoutCell]
+                )
+            )
+            {
+                runoutCell = c;
+            }
+        }
+    }
+    if (!(released > 0) || runoutCell < 0)
+    {
+        FatalErrorInFunction
+            << (released > 0
+                ? "no cell has hMax above the threshold "
+                  + std::to_string(threshold)
+                : "no release: h = 0 at time " + first)
+            << nl << exit(FatalError);
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+        com0[k] /= released/cellArea;
+        com1[k] /= deposit > 0 ? deposit/cellArea : 1;
+    }
+    const terrain::vec3 runout =
+        bedPoint(surface, C[runoutCell], zb[runoutCell]);
+
+    OFstream report(outDir/"report.dat");
+    report.precision(10);
+    report
+        << "# hazardMaps: time " << runTime.timeName() << ", threshold "
+        << threshold << " m on hMax" << nl
+        << "releasedVolume " << released << nl
+        << "depositVolume " << deposit << nl
+        << "runoutX " << runout[0] << nl
+        << "runoutY " << runout[1] << nl
+        << "runoutZ " << runout[2] << nl
+        << "travelAngle " << travelAngle(top, runout) << nl
+        << "comTravelAngle " << travelAngle(com0, com1) << nl;
+    Info<< nl << "Released volume " << released << " m^3, at time "
+        << runTime.timeName() << " " << deposit << " m^3" << nl
+        << "Runout point (" << runout[0] << " " << runout[1] << " "
+        << runout[2] << "), travel angle " << travelAngle(top, runout)
+        << " deg, centre of mass " << travelAngle(com0, com1) << " deg" << nl
+        << "Wrote " << outDir << nl << nl << "End\n" << endl;
+    return 0;
+}
