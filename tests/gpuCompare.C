@@ -303,6 +303,10 @@ std::vector<State> compareRun
             + fmt(": peak maps hMax, UMax bit-identical (max UMax %.4g)", top));
         test.check(allSame, prec + ": h, hu, hv bit-identical at every output time");
         test.check(clocksSame, prec + ": steps, time and last dt identical");
+        const long long wc = cpu.wetCellUpdates();
+        const long long wg = gpu->wetCellUpdates();
+        test.check(wc == wg && wc > 0, prec + fmt(": wet cells counted over the "
+            "steps identical (%lld / %lld)", wc, wg));
     }
     else
     {

@@ -186,15 +186,18 @@ void CpuSolver<Real>::advanceStep(Real dt)
     }
     speedClips_ += clips;
 
-    #pragma omp parallel for if(parallel_) schedule(static)
+    long long wet = 0;
+    #pragma omp parallel for if(parallel_) reduction(+:wet) schedule(static)
     for (int j = 0; j < ny; ++j)
     {
         for (int i = 0; i < nx; ++i)
         {
             partialWetCell(m, Un, i, j);
             updatePeaks(m, Un, hPeak_.data(), speedPeak_.data(), i, j);
+            wet += Un.h[g.idx(i, j)] > m.p.hDry ? 1 : 0;
         }
     }
+    wetUpdates_ += wet;
 
     std::swap(U_, Unew_);
 }

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace sh
 {
@@ -43,6 +44,18 @@ Problem<Real>::Problem
     if (nx < 1 || ny < 1 || !(xMax > xMin) || !(yMax > yMin))
     {
         throw std::invalid_argument("Problem: empty or inverted grid");
+    }
+    // Cells are indexed with int (physics/grid.H), ghost layers included
+    const long long padded =
+        (long long)(nx + 2*Grid<Real>::ng)*(ny + 2*Grid<Real>::ng);
+    if (padded > 2147483647LL)
+    {
+        throw std::invalid_argument
+        (
+            "Problem: " + std::to_string(nx) + " x " + std::to_string(ny)
+          + " cells is more than the 2^31 - 1 cells (with two ghost layers)"
+            " that the grid's int indices reach"
+        );
     }
     grid.nx = nx;
     grid.ny = ny;
@@ -286,7 +299,7 @@ HostGeometry<Real>::HostGeometry(const Problem<Real>& pb)
     // state's do, so that a lake at rest meets a wall at rest; beyond an
     // open side (transmissive, inflow) the bed continues linearly, so that
     // the cells next to it feel its slope (a mirrored bed would give them
-    // a flat reconstructed bed, scheme.H cellSlopes).  x-sides first, then
+    // a flat reconstructed bed, physics/reconstruction.H).  x-sides first, then
     // y-sides over whole padded rows (the corners).
     zb.assign(g.size(), Real(0));
     for (int j = 0; j < g.ny; ++j)
