@@ -306,7 +306,7 @@ std::vector<State> compareRun
         const long long wc = cpu.wetCellUpdates();
         const long long wg = gpu->wetCellUpdates();
         test.check(wc == wg && wc > 0, prec + fmt(": wet cells counted over the "
-            "steps identical (%lld / %lld)", wc, wg));
+            "steps identical (%.0f / %.0f)", double(wc), double(wg)));
     }
     else
     {
