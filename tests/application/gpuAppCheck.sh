@@ -36,12 +36,7 @@
 set -u
 project="$1"
 work="$2"
-cd "$project" || exit 1
-rm -rf "$work"
-mkdir -p "$work"
-work="$(cd "$work" && pwd)"
-project="$(pwd)"
-. tests/application/bundleEnv.sh || exit 1
+. "$project/tests/application/bundleEnv.sh" || exit 1
 status=0
 
 #- prepare <name> <tutorial> <nx> <ny> <endTime> <writeInterval> [entry value]...

@@ -23,12 +23,7 @@ set -u
 project="$1"
 work="$2"
 sizes="${3:-2048x2048 4096x2048}"
-cd "$project" || exit 1
-rm -rf "$work"
-mkdir -p "$work"
-work="$(cd "$work" && pwd)"
-project="$(pwd)"
-. tests/application/bundleEnv.sh || exit 1
+. "$project/tests/application/bundleEnv.sh" || exit 1
 status=0
 
 for size in $sizes

@@ -18,12 +18,7 @@
 set -u
 project="$1"
 work="$2"
-cd "$project" || exit 1
-rm -rf "$work"
-mkdir -p "$work"
-work="$(cd "$work" && pwd)"
-project="$(pwd)"
-. tests/application/bundleEnv.sh || exit 1
+. "$project/tests/application/bundleEnv.sh" || exit 1
 status=0
 pass() { echo "PASS  $*"; }
 fail() { echo "FAIL  $*"; status=1; }

@@ -11,25 +11,6 @@
 namespace sh
 {
 
-namespace
-{
-
-template<class Real>
-void store(const FaceFields<Real>& F, int c, const FaceFlux<Real>& f)
-{
-    F.h[c] = f.F.h;
-    F.hu[c] = f.F.hu;
-    F.hv[c] = f.F.hv;
-    if (F.bedLow)
-    {
-        F.bedLow[c] = f.bedLow;
-        F.bedHigh[c] = f.bedHigh;
-    }
-}
-
-} // namespace
-
-
 template<class Real>
 CpuSolver<Real>::CpuSolver(const Problem<Real>& pb, bool parallel)
 :
@@ -163,13 +144,13 @@ void CpuSolver<Real>::advanceStep(Real dt)
             {
                 for (int i = -1; i < nx; ++i)
                 {
-                    store(Fx, g.idx(i, j), fluxX(m, lo[i + 1], lo[i + 2]));
+                    storeFaceFlux(Fx, g.idx(i, j), fluxX(m, lo[i + 1], lo[i + 2]));
                 }
             }
             reconstructRow(j + 1, hi);
             for (int i = 0; i < nx; ++i)
             {
-                store(Fy, g.idx(i, j), fluxY(m, lo[i + 1], hi[i + 1]));
+                storeFaceFlux(Fy, g.idx(i, j), fluxY(m, lo[i + 1], hi[i + 1]));
             }
             std::swap(lo, hi);
         }
