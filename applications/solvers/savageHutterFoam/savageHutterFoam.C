@@ -87,6 +87,10 @@ int main(int argc, char *argv[])
     const controlSettings control =
         controlSettings::readFile(args.path()/"system"/"controlDict");
 
+    // A time directory a killed run was replacing, back before Time looks
+    // for the latest time
+    restoreReplaced(args.path());
+
     #include "createTime.H"
 
     if (control.endTime < runTime.value())
