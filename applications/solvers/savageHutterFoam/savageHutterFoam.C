@@ -102,6 +102,10 @@ int main(int argc, char *argv[])
             << runTime.timeName() << nl << exit(FatalIOError);
     }
 
+    // The block of blockMeshDict, before the mesh is read (a scale beyond
+    // 1e30 writes points the mesh reader refuses without naming it)
+    structuredMesh::readBlockCounts(runTime);
+
     #include "createMesh.H"
 
     autoPtr<avalancheCase> acPtr = readCase(runTime, mesh);
