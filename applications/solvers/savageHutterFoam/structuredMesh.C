@@ -71,7 +71,9 @@ labelVector structuredMesh::readBlockCounts(const Time& runTime)
 
         if (!dict.found("blocks", keyType::LITERAL))
         {
-            return labelVector::zero;
+            FatalIOErrorInFunction(dict)
+                << "No blocks in " << file << "." << nl << needs << nl
+                << exit(FatalIOError);
         }
         ITstream& blocks = dict.lookup("blocks");
         label nHex = 0;
@@ -134,7 +136,7 @@ labelVector structuredMesh::readBlockCounts(const Time& runTime)
                     << needs << nl << exit(FatalIOError);
             }
         }
-        if (nHex > 1)
+        if (nHex != 1)
         {
             FatalIOErrorInFunction(dict)
                 << "blocks of " << file << " has " << nHex
