@@ -11,7 +11,8 @@ Description
     cannot express.  Each field is the sum of its shapes evaluated at the
     cell centres (x, y); fields not listed are left as they are.  Every
     number of a shape and every value set must be finite and at most 1e30
-    in magnitude (as savageHutterFoam requires), h >= 0; on any error
+    in magnitude (as savageHutterFoam requires), h >= 0, and a keyword a
+    shape does not have is an error (never a silent default); on any error
     nothing is written.  Boundary
     conditions of existing fields are kept; a missing 0/zb is created with
     zeroGradient patches.
@@ -60,6 +61,24 @@ const wordList scalarShapes
 });
 
 const wordList vectorShapes({"box", "damBreak"});
+
+//- The keywords of each shape (a misspelt one must not fall back to a
+//  default)
+wordList shapeKeywords(const word& type)
+{
+    if (type == "hemisphere") return {"centre", "radius"};
+    if (type == "cone" || type == "paraboloid")
+    {
+        return {"centre", "radius", "height"};
+    }
+    if (type == "box") return {"min", "max", "value"};
+    if (type == "damBreak") return {"position", "upstream", "downstream"};
+    if (type == "plane") return {"origin", "value", "gradient"};
+    if (type == "bowl") return {"centre", "slope"};
+    if (type == "gaussian") return {"centre", "amplitude", "width"};
+    if (type == "channel") return {"axis", "curvature"};
+    return wordList();
+}
 
 vector2D xy(const point& p)
 {
@@ -244,6 +263,18 @@ PtrList<entry> shapes
                 << "Unknown shape '" << list[k].keyword() << "' in " << name
                 << "." << nl << "Valid shapes for " << name << ": "
                 << flatOutput(valid) << nl << exit(FatalIOError);
+        }
+        const wordList keys(shapeKeywords(list[k].keyword()));
+        for (const word& key : list[k].dict().toc())
+        {
+            if (!keys.found(key))
+            {
+                FatalIOErrorInFunction(list[k].dict())
+                    << "Unknown keyword '" << key << "' of the "
+                    << list[k].keyword() << " in " << name << "." << nl
+                    << "Valid keywords: " << flatOutput(keys) << nl
+                    << exit(FatalIOError);
+            }
         }
     }
     return list;
