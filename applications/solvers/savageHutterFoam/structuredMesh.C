@@ -125,7 +125,6 @@ labelVector structuredMesh::readBlockCounts(const Time& runTime)
                     }
                 }
                 counts << ")";
-                valid = valid && n[2] == 1;
             }
             if (!valid)
             {
@@ -135,12 +134,22 @@ labelVector structuredMesh::readBlockCounts(const Time& runTime)
                     << " of the hex block in blocks of " << file << "." << nl
                     << needs << nl << exit(FatalIOError);
             }
+            if (n[2] != 1)
+            {
+                FatalIOErrorInFunction(dict)
+                    << "3D mesh: the hex block in blocks of " << file
+                    << " has " << n[2] << " cells in z, cell counts "
+                    << counts.str().c_str() << ".  savageHutterFoam needs"
+                    << " exactly one cell in z (blockMesh: nx ny 1)." << nl
+                    << exit(FatalIOError);
+            }
         }
         if (nHex != 1)
         {
             FatalIOErrorInFunction(dict)
-                << "blocks of " << file << " has " << nHex
-                << " hex blocks.  " << needs << nl << exit(FatalIOError);
+                << "blockMeshDict " << file << " has " << nHex
+                << " blocks in blocks.  " << needs << nl
+                << exit(FatalIOError);
         }
         return n;
     }
