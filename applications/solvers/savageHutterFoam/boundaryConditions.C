@@ -66,6 +66,29 @@ sideCondition classify
         {
             return c;
         }
+        // The bound of the initial fields (avalancheCase.H): beyond it the
+        // scheme's squares overflow (and mag() of such a U here)
+        const scalar big = 1e30;
+        forAll(hp, facei)
+        {
+            if (!(hp[facei] >= 0 && hp[facei] <= big))
+            {
+                FatalIOErrorInFunction(h.objectPath())
+                    << "Patch " << c.patch << ": inflow thickness h = "
+                    << hp[facei] << " at face " << facei << " must be"
+                    << " finite, >= 0 and at most 1e30" << nl
+                    << exit(FatalIOError);
+            }
+            const vector& u = Up[facei];
+            if (!(mag(u.x()) <= big && mag(u.y()) <= big && mag(u.z()) <= big))
+            {
+                FatalIOErrorInFunction(U.objectPath())
+                    << "Patch " << c.patch << ": inflow velocity U = " << u
+                    << " at face " << facei << " must be finite, components"
+                    << " of magnitude at most 1e30" << nl
+                    << exit(FatalIOError);
+            }
+        }
         c.h = hp[0];
         c.U = Up[0];
         forAll(hp, facei)
@@ -83,18 +106,6 @@ sideCondition classify
                     << ", face 0 h = " << c.h << ", U = " << c.U << nl
                     << exit(FatalIOError);
             }
-        }
-        if (!std::isfinite(c.h) || c.h < 0)
-        {
-            FatalIOErrorInFunction(h.objectPath())
-                << "Patch " << c.patch << ": inflow thickness h = " << c.h
-                << " must be finite and >= 0" << nl << exit(FatalIOError);
-        }
-        if (!std::isfinite(c.U.x()) || !std::isfinite(c.U.y()))
-        {
-            FatalIOErrorInFunction(U.objectPath())
-                << "Patch " << c.patch << ": inflow velocity U = " << c.U
-                << " must be finite" << nl << exit(FatalIOError);
         }
     }
     else

@@ -19,6 +19,16 @@ volatile std::sig_atomic_t last = 0;
 namespace
 {
 
+//- Inside a holdEnd, and the ending signal held back there (0: none)
+volatile std::sig_atomic_t holding = 0;
+volatile std::sig_atomic_t held = 0;
+
+void endBy(const int sig)
+{
+    std::signal(sig, SIG_DFL);
+    std::raise(sig);
+}
+
 extern "C" void onSignal(int sig)
 {
     if (sig != SIGUSR1)
@@ -26,8 +36,14 @@ extern "C" void onSignal(int sig)
         if (stop)
         {
             // The second one: the user does not want to wait
-            std::signal(sig, SIG_DFL);
-            std::raise(sig);
+            if (holding)
+            {
+                held = sig;
+            }
+            else
+            {
+                endBy(sig);
+            }
             return;
         }
         stop = 1;
@@ -37,6 +53,22 @@ extern "C" void onSignal(int sig)
 }
 
 } // namespace
+
+
+holdEnd::holdEnd()
+{
+    holding = 1;
+}
+
+
+holdEnd::~holdEnd()
+{
+    holding = 0;
+    if (held)
+    {
+        endBy(held);
+    }
+}
 
 
 void install()

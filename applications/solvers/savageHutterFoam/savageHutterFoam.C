@@ -87,6 +87,10 @@ int main(int argc, char *argv[])
     const controlSettings control =
         controlSettings::readFile(args.path()/"system"/"controlDict");
 
+    // A time directory a killed run was replacing, back before Time looks
+    // for the latest time
+    restoreReplaced(args.path());
+
     #include "createTime.H"
 
     if (control.endTime < runTime.value())
@@ -97,6 +101,10 @@ int main(int argc, char *argv[])
             << ")." << nl << "Valid values: endTime >= "
             << runTime.timeName() << nl << exit(FatalIOError);
     }
+
+    // The block of blockMeshDict, before the mesh is read (a scale beyond
+    // 1e30 writes points the mesh reader refuses without naming it)
+    structuredMesh::readBlockCounts(runTime);
 
     #include "createMesh.H"
 

@@ -7,6 +7,7 @@
 #include "IFstream.H"
 #include "boundBox.H"
 #include "volFields.H"
+#include "OStringStream.H"
 
 namespace Foam
 {
@@ -28,45 +29,131 @@ bool close(const scalar a, const scalar b, const scalar scale)
 } // namespace
 
 
-void structuredMesh::checkBlockMeshDict(const fvMesh& mesh) const
+labelVector structuredMesh::readBlockCounts(const Time& runTime)
 {
     const fileName dictFiles[2] =
     {
-        mesh.time().system()/"blockMeshDict",
-        mesh.time().constant()/"polyMesh"/"blockMeshDict"
+        runTime.system()/"blockMeshDict",
+        runTime.constant()/"polyMesh"/"blockMeshDict"
     };
     for (const fileName& rel : dictFiles)
     {
-        const fileName file(mesh.time().path()/rel);
+        const fileName file(runTime.path()/rel);
         if (!isFile(file))
         {
             continue;
         }
         IFstream is(file);
         const dictionary dict(is);
-        if (!dict.found("blocks"))
+        const char* needs =
+            "savageHutterFoam needs one hex block of nx ny 1 uniform cells,"
+            " nx and ny positive integers:\n"
+            "    blocks ( hex (0 1 2 3 4 5 6 7) (nx ny 1)"
+            " simpleGrading (1 1 1) );\n"
+            "then blockMesh again";
+
+        // The mesh's coordinates, as blockMesh scales them (it ignores a
+        // factor <= 0): beyond 1e30 the scheme's products overflow
+        for (const word key : {"convertToMeters", "scale"})
         {
-            return;
+            if (dict.found(key, keyType::LITERAL))
+            {
+                const scalar s = dict.get<scalar>(key);
+                if (!(mag(s) <= 1e30))
+                {
+                    FatalIOErrorInFunction(dict)
+                        << "Invalid " << key << " " << s << " in " << file
+                        << ": must be a finite number of magnitude at most"
+                        << " 1e30" << nl << exit(FatalIOError);
+                }
+            }
+        }
+
+        if (!dict.found("blocks", keyType::LITERAL))
+        {
+            FatalIOErrorInFunction(dict)
+                << "No blocks in " << file << "." << nl << needs << nl
+                << exit(FatalIOError);
         }
         ITstream& blocks = dict.lookup("blocks");
         label nHex = 0;
+        labelVector n(labelVector::zero);
+        const auto punct = [&blocks](label i, token::punctuationToken p)
+        {
+            return i < blocks.size() && blocks[i].isPunctuation()
+                && blocks[i].pToken() == p;
+        };
         forAll(blocks, i)
         {
-            if (blocks[i].isWord() && blocks[i].wordToken() == "hex")
+            if (!blocks[i].isWord() || blocks[i].wordToken() != "hex")
             {
-                ++nHex;
+                continue;
+            }
+            ++nHex;
+            // hex (8 vertices) [zone name] (nx ny nz) grading
+            label k = i + 1;
+            bool ok = punct(k, token::BEGIN_LIST);
+            while (ok && ++k < blocks.size() && !punct(k, token::END_LIST))
+            {}
+            ok = ok && k < blocks.size();
+            ++k;
+            if
+            (
+                ok && k < blocks.size() && blocks[k].isWord()
+             && !blocks[k].wordToken().endsWith("Grading")
+            )
+            {
+                ++k;
+            }
+            ok = ok && punct(k, token::BEGIN_LIST) && punct(k + 4, token::END_LIST);
+            OStringStream counts;
+            bool valid = ok;
+            if (ok)
+            {
+                counts << "(";
+                for (label d = 0; d < 3; ++d)
+                {
+                    const token& t = blocks[k + 1 + d];
+                    counts << (d ? " " : "") << t;
+                    if (t.isLabel() && t.labelToken() >= 1)
+                    {
+                        n[d] = t.labelToken();
+                    }
+                    else
+                    {
+                        valid = false;
+                    }
+                }
+                counts << ")";
+            }
+            if (!valid)
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Invalid cell counts "
+                    << (ok ? counts.str().c_str() : "(not found)")
+                    << " of the hex block in blocks of " << file << "." << nl
+                    << needs << nl << exit(FatalIOError);
+            }
+            if (n[2] != 1)
+            {
+                FatalIOErrorInFunction(dict)
+                    << "3D mesh: the hex block in blocks of " << file
+                    << " has " << n[2] << " cells in z, cell counts "
+                    << counts.str().c_str() << ".  savageHutterFoam needs"
+                    << " exactly one cell in z (blockMesh: nx ny 1)." << nl
+                    << exit(FatalIOError);
             }
         }
-        if (nHex > 1)
+        if (nHex != 1)
         {
             FatalIOErrorInFunction(dict)
                 << "blockMeshDict " << file << " has " << nHex
-                << " blocks.  savageHutterFoam needs one hex block with"
-                << " nx ny 1 uniform cells." << nl
+                << " blocks in blocks.  " << needs << nl
                 << exit(FatalIOError);
         }
-        return;
+        return n;
     }
+    return labelVector::zero;
 }
 
 
@@ -80,12 +167,26 @@ structuredMesh::structuredMesh(const fvMesh& mesh)
     yMin_(0),
     sidePatches_(4)
 {
-    checkBlockMeshDict(mesh);
-
     const label nCells = mesh.nCells();
     if (nCells == 0)
     {
         FatalErrorInFunction << "The mesh has no cells" << nl
+            << exit(FatalError);
+    }
+
+    // A mesh that blockMesh did not make from the blockMeshDict there is
+    // (an edit of the cell counts after which blockMesh failed or was not
+    // run again)
+    const labelVector n = readBlockCounts(mesh.time());
+    const scalar nBlock = scalar(n.x())*n.y()*n.z();
+    if (nBlock > 0 && nBlock != nCells)
+    {
+        FatalErrorInFunction
+            << "The mesh in constant/polyMesh has " << nCells << " cells,"
+            << " but blocks of system/blockMeshDict give " << n.x() << " x "
+            << n.y() << " x " << n.z() << " = " << nBlock << ": the"
+            << " mesh was not made from it (blockMesh failed, or was not run"
+            << " again after an edit).  Run blockMesh." << nl
             << exit(FatalError);
     }
 
@@ -111,7 +212,7 @@ structuredMesh::structuredMesh(const fvMesh& mesh)
 
     // Widths of every cell: one uniform hexahedron per (i, j), full depth
     scalarField wx(nCells), wy(nCells);
-    scalar wxMin = GREAT, wxMax = 0, wyMin = GREAT, wyMax = 0;
+    scalar wxMin = VGREAT, wxMax = 0, wyMin = VGREAT, wyMax = 0;
     forAll(cellPoints, c)
     {
         const labelList& cp = cellPoints[c];

@@ -4,6 +4,7 @@
 
 #include "timeDirectories.H"
 #include "OSspecific.H"
+#include "runSignals.H"
 
 #include <cerrno>
 #include <cstdio>
@@ -77,7 +78,71 @@ void renameOrFail(const fileName& from, const fileName& to)
     }
 }
 
+//- Swap two directories in one step (Linux renameat2 RENAME_EXCHANGE):
+//  false where the file system or kernel does not offer it
+bool exchange(const fileName& a, const fileName& b)
+{
+    // The tests take the fallback through SH_NO_RENAME_EXCHANGE=1
+    static const bool off = std::getenv("SH_NO_RENAME_EXCHANGE") != nullptr;
+    if (off)
+    {
+        return false;
+    }
+#ifdef RENAME_EXCHANGE
+    if (::renameat2(AT_FDCWD, a.c_str(), AT_FDCWD, b.c_str(), RENAME_EXCHANGE) == 0)
+    {
+        return true;
+    }
+    if (errno != EINVAL && errno != ENOSYS && errno != ENOTSUP)
+    {
+        failed("swap into place", a);
+    }
+#endif
+    return false;
+}
+
+//- The suffix under which the fallback moves a directory being replaced
+const char* const replacedSuffix = ".replaced";
+
 } // namespace
+
+
+void restoreReplaced(const fileName& caseDir)
+{
+    const fileName staging = caseDir/stagingDirName;
+    if (!isDir(staging, false))
+    {
+        return;
+    }
+    // A time directory being replaced when the run was killed (only where
+    // the directories cannot be swapped in one step, see write()): it was
+    // complete, and the new one never took its place
+    const std::string::size_type len = std::strlen(replacedSuffix);
+    for
+    (
+        const fileName& d
+      : readDir(staging, fileName::DIRECTORY, false, false)
+    )
+    {
+        const std::string n(d);
+        if
+        (
+            n.size() > len
+         && n.compare(n.size() - len, len, replacedSuffix) == 0
+        )
+        {
+            const fileName target = caseDir/n.substr(0, n.size() - len);
+            if (!isDir(target, false))
+            {
+                WarningInFunction
+                    << "Restoring " << target << " from " << staging/d
+                    << ": a run was stopped while replacing it" << nl
+                    << endl;
+                renameOrFail(staging/d, target);
+            }
+        }
+    }
+}
 
 
 void removeIncompleteWrites(const Time& runTime)
@@ -221,19 +286,38 @@ void atomicWriter::write()
     }
     syncTree(staged);
 
-    // A directory of that name from an earlier run is replaced: moved
-    // aside first, as rename() does not replace a non-empty directory
-    fileName aside;
+    // A directory of that name from an earlier run (a restart from an
+    // earlier time) is replaced.  rename() does not replace a non-empty
+    // directory: the two are swapped in one step, after which the old one
+    // lies in the staging directory, so that <time> is at every moment the
+    // old directory or the new one, both complete.  Where the file system
+    // cannot swap, the old one is moved aside first, a second SIGTERM/SIGINT
+    // held back over the two renames; a run killed between them leaves it
+    // as <time>.replaced, which the next start moves back
+    // (removeIncompleteWrites).
     if (isDir(target, false))
     {
-        aside = staging/(name + ".replaced");
-        renameOrFail(target, aside);
+        if (exchange(staged, target))
+        {
+            syncPath(caseDir);
+            rmDir(staged);
+        }
+        else
+        {
+            const fileName aside = staging/(name + replacedSuffix);
+            {
+                runSignals::holdEnd held;
+                renameOrFail(target, aside);
+                renameOrFail(staged, target);
+                syncPath(caseDir);
+            }
+            rmDir(aside);
+        }
     }
-    renameOrFail(staged, target);
-    syncPath(caseDir);
-    if (!aside.empty())
+    else
     {
-        rmDir(aside);
+        renameOrFail(staged, target);
+        syncPath(caseDir);
     }
     ::rmdir(staging.c_str());
 

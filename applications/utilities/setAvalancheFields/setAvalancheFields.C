@@ -9,7 +9,11 @@ Description
     savageHutterFoam case from shapes named in system/setAvalancheFieldsDict,
     the release shapes and beds of avalanche test cases that setFields
     cannot express.  Each field is the sum of its shapes evaluated at the
-    cell centres (x, y); fields not listed are left as they are.  Boundary
+    cell centres (x, y); fields not listed are left as they are.  Every
+    number of a shape and every value set must be finite and at most 1e30
+    in magnitude (as savageHutterFoam requires), h >= 0, and a keyword a
+    shape does not have is an error (never a silent default); on any error
+    nothing is written.  Boundary
     conditions of existing fields are kept; a missing 0/zb is created with
     zeroGradient patches.
 
@@ -58,14 +62,72 @@ const wordList scalarShapes
 
 const wordList vectorShapes({"box", "damBreak"});
 
+//- The keywords of each shape (a misspelt one must not fall back to a
+//  default)
+wordList shapeKeywords(const word& type)
+{
+    if (type == "hemisphere") return {"centre", "radius"};
+    if (type == "cone" || type == "paraboloid")
+    {
+        return {"centre", "radius", "height"};
+    }
+    if (type == "box") return {"min", "max", "value"};
+    if (type == "damBreak") return {"position", "upstream", "downstream"};
+    if (type == "plane") return {"origin", "value", "gradient"};
+    if (type == "bowl") return {"centre", "slope"};
+    if (type == "gaussian") return {"centre", "amplitude", "width"};
+    if (type == "channel") return {"axis", "curvature"};
+    return wordList();
+}
+
 vector2D xy(const point& p)
 {
     return vector2D(p.x(), p.y());
 }
 
+//- Magnitudes beyond this are refused, as savageHutterFoam refuses them in
+//  its initial fields (its squares and products would overflow)
+const scalar bound = 1e30;
+
+bool bounded(const scalar v)
+{
+    return mag(v) <= bound;
+}
+
+bool bounded(const vector2D& v)
+{
+    return bounded(v.x()) && bounded(v.y());
+}
+
+bool bounded(const vector& v)
+{
+    return bounded(v.x()) && bounded(v.y()) && bounded(v.z());
+}
+
+//- An entry of a shape: a finite number (or vector) of magnitude at most
+//  1e30, else FatalIOError naming the keyword
+template<class Type>
+Type get(const dictionary& d, const word& key)
+{
+    const Type v = d.get<Type>(key);
+    if (!bounded(v))
+    {
+        FatalIOErrorInFunction(d)
+            << "Invalid " << key << " " << v << ": must be finite, of"
+            << " magnitude at most " << bound << nl << exit(FatalIOError);
+    }
+    return v;
+}
+
+template<class Type>
+Type getOrDefault(const dictionary& d, const word& key, const Type& deflt)
+{
+    return d.found(key, keyType::LITERAL) ? get<Type>(d, key) : deflt;
+}
+
 scalar positive(const dictionary& d, const word& key)
 {
-    const scalar v = d.get<scalar>(key);
+    const scalar v = get<scalar>(d, key);
     if (!(v > 0))
     {
         FatalIOErrorInFunction(d)
@@ -82,15 +144,15 @@ bool region(const word& type, const dictionary& d, const point& p, Type& v)
 {
     if (type == "box")
     {
-        const vector2D lo = d.get<vector2D>("min");
-        const vector2D hi = d.get<vector2D>("max");
-        v = d.get<Type>("value");
+        const vector2D lo = get<vector2D>(d, "min");
+        const vector2D hi = get<vector2D>(d, "max");
+        v = get<Type>(d, "value");
         return p.x() >= lo.x() && p.x() <= hi.x()
             && p.y() >= lo.y() && p.y() <= hi.y();
     }
     // damBreak
-    const bool up = p.x() < d.get<scalar>("position");
-    v = d.get<Type>(up ? "upstream" : "downstream");
+    const bool up = p.x() < get<scalar>(d, "position");
+    v = get<Type>(d, up ? "upstream" : "downstream");
     return true;
 }
 
@@ -103,26 +165,26 @@ scalar scalarShape(const word& type, const dictionary& d, const point& p)
     }
     if (type == "plane")
     {
-        const vector2D o = d.getOrDefault<vector2D>("origin", vector2D::zero);
-        const vector2D g = d.get<vector2D>("gradient");
-        return d.getOrDefault<scalar>("value", 0) + (g & (xy(p) - o));
+        const vector2D o = getOrDefault<vector2D>(d, "origin", vector2D::zero);
+        const vector2D g = get<vector2D>(d, "gradient");
+        return getOrDefault<scalar>(d, "value", 0) + (g & (xy(p) - o));
     }
     if (type == "channel")
     {
-        const scalar y = p.y() - d.getOrDefault<scalar>("axis", 0);
-        return 0.5*d.get<scalar>("curvature")*y*y;
+        const scalar y = p.y() - getOrDefault<scalar>(d, "axis", 0);
+        return 0.5*get<scalar>(d, "curvature")*y*y;
     }
 
-    const vector2D c = d.get<vector2D>("centre");
+    const vector2D c = get<vector2D>(d, "centre");
     const scalar r = mag(xy(p) - c);
     if (type == "bowl")
     {
-        return d.get<scalar>("slope")*r;
+        return get<scalar>(d, "slope")*r;
     }
     if (type == "gaussian")
     {
         const scalar w = positive(d, "width");
-        return d.get<scalar>("amplitude")*Foam::exp(-0.5*sqr(r/w));
+        return get<scalar>(d, "amplitude")*Foam::exp(-0.5*sqr(r/w));
     }
     const scalar R = positive(d, "radius");
     if (r >= R)
@@ -202,6 +264,18 @@ PtrList<entry> shapes
                 << "." << nl << "Valid shapes for " << name << ": "
                 << flatOutput(valid) << nl << exit(FatalIOError);
         }
+        const wordList keys(shapeKeywords(list[k].keyword()));
+        for (const word& key : list[k].dict().toc())
+        {
+            if (!keys.found(key))
+            {
+                FatalIOErrorInFunction(list[k].dict())
+                    << "Unknown keyword '" << key << "' of the "
+                    << list[k].keyword() << " in " << name << "." << nl
+                    << "Valid keywords: " << flatOutput(keys) << nl
+                    << exit(FatalIOError);
+            }
+        }
     }
     return list;
 }
@@ -244,6 +318,18 @@ void setField
         forAll(C, c)
         {
             f[c] += shapeValue<Type>(type, d, C[c]);
+        }
+    }
+    forAll(f, c)
+    {
+        if (!bounded(f[c]))
+        {
+            FatalIOErrorInFunction(dict)
+                << "The shapes of " << name << " give " << name << " = "
+                << f[c] << " in cell " << c << " at " << C[c] << ", beyond "
+                << bound << " in magnitude; check their entries:" << nl
+                << dict.findEntry(name, keyType::LITERAL)->stream() << nl
+                << exit(FatalIOError);
         }
     }
     f.correctBoundaryConditions();
@@ -300,35 +386,35 @@ int main(int argc, char *argv[])
 
     const volVectorField::Internal& C = mesh.C();
 
+    // Every field first, then the writes: a shape refused in one field
+    // leaves all of them as they were
+    autoPtr<volScalarField> h;
+    autoPtr<volVectorField> U;
+    autoPtr<volScalarField> zb;
     if (dict.found("h"))
     {
-        volScalarField h(fieldIO(mesh, "h"), mesh);
-        setField(dict, "h", scalarShapes, h, C);
-        forAll(h, c)
+        h.reset(new volScalarField(fieldIO(mesh, "h"), mesh));
+        setField(dict, "h", scalarShapes, h(), C);
+        forAll(h(), c)
         {
-            if (h[c] < 0)
+            if (h()[c] < 0)
             {
                 FatalIOErrorInFunction(dict)
-                    << "The shapes of h give h = " << h[c] << " < 0 in cell "
+                    << "The shapes of h give h = " << h()[c] << " < 0 in cell "
                     << c << " at " << C[c] << "; check their entries:" << nl
                     << dict.findEntry("h", keyType::LITERAL)->stream()
                     << nl << exit(FatalIOError);
             }
         }
-        Info<< "Writing h: volume " << gSum(h.primitiveField()*mesh.V()/
-            (mesh.bounds().span().z())) << " m^3" << nl << endl;
-        h.write();
     }
     if (dict.found("U"))
     {
-        volVectorField U(fieldIO(mesh, "U"), mesh);
-        setField(dict, "U", vectorShapes, U, C);
-        U.write();
+        U.reset(new volVectorField(fieldIO(mesh, "U"), mesh));
+        setField(dict, "U", vectorShapes, U(), C);
     }
     if (dict.found("zb"))
     {
         IOobject io(fieldIO(mesh, "zb"));
-        autoPtr<volScalarField> zb;
         if (io.typeHeaderOk<volScalarField>(true))
         {
             zb.reset(new volScalarField(io, mesh));
@@ -346,6 +432,21 @@ int main(int argc, char *argv[])
             );
         }
         setField(dict, "zb", scalarShapes, zb(), C);
+    }
+
+    if (h.valid())
+    {
+        Info<< "Writing h: volume " << gSum(h().primitiveField()*mesh.V()/
+            (mesh.bounds().span().z())) << " m^3" << nl << endl;
+        h().write();
+    }
+    if (U.valid())
+    {
+        Info<< "Writing U" << nl << endl;
+        U().write();
+    }
+    if (zb.valid())
+    {
         Info<< "Writing zb: range [" << gMin(zb().primitiveField()) << ", "
             << gMax(zb().primitiveField()) << "] m" << nl << endl;
         zb().write();

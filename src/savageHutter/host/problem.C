@@ -100,10 +100,25 @@ template<class Real>
 void Problem<Real>::setImpingingJet(const JetInput& in)
 {
     const auto num = numberString;
-    if (!(std::isfinite(in.xc) && std::isfinite(in.yc)))
+    // Beyond 1e30 the jet's state (R^2, R_imp^2, h u_jet) overflows, as
+    // every other input (modelInput.C)
+    const auto bounded = [&num](const char* keyword, double x)
     {
-        throw InputError("centre", "must be finite");
-    }
+        if (!(std::fabs(x) <= 1e30))
+        {
+            throw InputError
+            (
+                keyword,
+                "must be a finite number of magnitude at most 1e30, got "
+              + num(x)
+            );
+        }
+    };
+    bounded("centre", in.xc);
+    bounded("centre", in.yc);
+    bounded("R", in.R);
+    bounded("R_imp", in.rImp);
+    bounded("u_jet", in.uJet);
     if (!(in.R > 0 && std::isfinite(in.R)))
     {
         throw InputError("R", "jet radius must be positive, got " + num(in.R));
@@ -208,14 +223,34 @@ int Problem<Real>::imposeJet()
             {
                 continue;
             }
-            if (!(std::isfinite(double(q.h)) && std::isfinite(double(q.hu))))
+            // The bound of every initial field (avalancheCase.H): beyond
+            // it the scheme's squares overflow
+            if (!(std::fabs(double(q.h)) <= 1e30))
             {
                 throw InputError
                 (
-                    "centre",
-                    "h of eq. (38) overflows in cell (" + std::to_string(i)
-                  + ", " + std::to_string(jj) + ") next to the stagnation"
-                    " point"
+                    "R",
+                    "the jet's h of eq. (38), R^2 cos^3(zeta)/(2 r (1 -"
+                    " sin(zeta) cos(theta))^2), is " + numberString(q.h)
+                  + " in cell (" + std::to_string(i) + ", "
+                  + std::to_string(jj) + "), beyond 1e30: R too large, or"
+                    " the stagnation point (centre) too close to the cell"
+                    " centre"
+                );
+            }
+            if
+            (
+                !(std::fabs(double(q.hu)) <= 1e30)
+             || !(std::fabs(double(q.hv)) <= 1e30)
+            )
+            {
+                throw InputError
+                (
+                    "u_jet",
+                    "the jet's momentum h u_jet is " + numberString(q.hu)
+                  + ", " + numberString(q.hv) + " in cell ("
+                  + std::to_string(i) + ", " + std::to_string(jj)
+                  + "), beyond 1e30"
                 );
             }
             const int c = cell(i, jj);
