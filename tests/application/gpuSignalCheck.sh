@@ -9,7 +9,12 @@
 #     take minutes to reach; SIGUSR1 must write the current state and let
 #     the run go on, SIGTERM must write it and end the run cleanly (exit 0,
 #     "End") within 5 s, although the backend advances in CUDA graphs of
-#     128 steps; a restart from the directory SIGTERM wrote must run.
+#     many steps; a restart from the directory SIGTERM wrote must run;
+#     SIGINT must write the state of the stop time with its peak maps and
+#     end the |dh/dt| report (postProcessing/steadyState) at it, exit 0,
+#     within 5 s.  (That a restart continues exactly is checked on the CPU
+#     backend, tests/application/caseTests.sh: the restart is host code,
+#     and the GPU's states equal the CPU's.)
 #     Prints how long each signal took to be acted on.
 #
 # Usage
@@ -89,6 +94,44 @@ if savageHutterFoam -backend cuda > log.restart 2>&1 && grep -q "^End" log.resta
 else
     fail "restart from $last failed"
     tail -n 20 log.restart
+fi
+
+# SIGINT (^C): write the state with its peak maps and the |dh/dt| report
+# at the stop time, and end the run, within 5 s (the log prints the stop
+# time to 8 digits, the report to more)
+rm -rf "$d.int"
+cp -r "$d" "$d.int"
+cd "$d.int" || exit 1
+rm -rf $(timeDirs) postProcessing
+setEntry system/controlDict startFrom startTime
+setEntry system/controlDict endTime 1000
+setEntry system/controlDict writeInterval 1000
+savageHutterFoam -backend cuda > log.savageHutterFoam 2>&1 &
+pid=$!
+for _ in $(seq 1 600); do
+    grep -q "Starting time loop" log.savageHutterFoam 2>/dev/null && break
+    sleep 0.1
+done
+sleep 3
+kill -INT "$pid"
+t0=$(now)
+wait "$pid"
+rc=$?
+t1=$(now)
+took="$(awk -v a="$t0" -v b="$t1" 'BEGIN{printf "%.2f", b - a}')"
+stop="$(sed -n 's/^SIGINT at t = \([^:]*\): writing and stopping$/\1/p' log.savageHutterFoam)"
+last="$(timeDirs | tail -n1)"
+report=postProcessing/steadyState/0/dhdt.dat
+lastRow="$(grep -v '^#' "$report" 2>/dev/null | tail -n1 | awk '{print $1}')"
+if [ "$rc" -eq 0 ] && grep -q "^Stopped by SIGINT" log.savageHutterFoam \
+   && [ -n "$last" ] && [ -f "$last/h" ] && [ -f "$last/hMax" ] \
+   && [ -f "$last/UMax" ] && [ -n "$stop" ] \
+   && awk -v a="$lastRow" -v b="$stop" 'BEGIN{d = a - b; if (d < 0) d = -d; exit !(a != "" && d <= 1e-6*(b > 1 ? b : 1))}' \
+   && awk -v t="$took" 'BEGIN{exit !(t < 5)}'; then
+    pass "SIGINT: stopped at t = $stop, wrote $last with hMax and UMax, dh/dt report ends at $lastRow, exit 0 in $took s"
+else
+    fail "SIGINT: exit $rc after $took s, stop '$stop', last directory '$last', report's last row '$lastRow'"
+    tail -n 20 log.savageHutterFoam
 fi
 
 [ $status -eq 0 ] && echo "gpuSignalCheck: OK" || echo "gpuSignalCheck: FAILED"
