@@ -20,7 +20,8 @@
 #         jumps), Y = y;
 #       - both cases: surface.vtp.series and bed.vtp.series list every time
 #         directory, each .vtp parses (python3 xml.etree, base64 arrays
-#         decoded) with nx ny points, (nx-1)(ny-1) quads, every array the
+#         decoded; also by VTK's own reader when python3-vtk9 is there)
+#         with nx ny points, (nx-1)(ny-1) quads, every array the
 #         right length and finite; -latestTime writes that time alone;
 #       - bad input (no time directory, h missing at a time, no inclination
 #         and no terrainMapping): non-zero exit, FOAM FATAL (IO) ERROR naming
@@ -65,6 +66,10 @@ mkdir -p "$work"
 cat > "$work/vtp.py" <<'PYEOF'
 import base64, json, math, os, re, struct, sys
 import xml.etree.ElementTree as ET
+try:
+    import vtk   # Debian's python3-vtk9, when installed
+except ImportError:
+    vtk = None
 TYPES = {"Float32": "f", "Float64": "d", "Int64": "q", "Int32": "i", "UInt32": "I"}
 ok = True
 def say(good, msg):
@@ -119,7 +124,19 @@ def checkFiles(case, nx, ny):
             if not all(math.isfinite(c) for p in pts for c in p):
                 bad.append(f"{t}: points not finite")
             res.setdefault(t, {})[base] = (pts, data)
-        say(not bad, f"{base}_<time>.vtp parse, {nx*ny} points, {(nx-1)*(ny-1)} quads, "
+            if vtk:
+                r = vtk.vtkXMLPolyDataReader()
+                r.SetFileName(f"{out}/{base}_{t}.vtp")
+                r.Update()
+                pd = r.GetOutput()
+                if r.GetErrorCode() or pd.GetNumberOfPoints() != len(pts) \
+                    or pd.GetNumberOfPolys() != (nx - 1)*(ny - 1) \
+                    or pd.GetPoints().GetPoint(len(pts) - 1) != tuple(pts[-1]) \
+                    or pd.GetPointData().GetArray("h").GetNumberOfTuples() != len(pts):
+                    bad.append(f"{t}: VTK's reader reads {pd.GetNumberOfPoints()} points, "
+                               f"{pd.GetNumberOfPolys()} polys")
+        say(not bad, f"{base}_<time>.vtp parse" + (" (and VTK's vtkXMLPolyDataReader reads them)" if vtk else "")
+            + f", {nx*ny} points, {(nx-1)*(ny-1)} quads, "
             f"arrays {sorted(data)} of that length and finite, at {len(ts)} times"
             + (": " + "; ".join(bad[:3]) if bad else ""))
     return res
