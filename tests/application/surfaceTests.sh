@@ -135,7 +135,7 @@ def checkFiles(case, nx, ny):
                     or pd.GetPointData().GetArray("h").GetNumberOfTuples() != len(pts):
                     bad.append(f"{t}: VTK's reader reads {pd.GetNumberOfPoints()} points, "
                                f"{pd.GetNumberOfPolys()} polys")
-        say(not bad, f"{base}_<time>.vtp parse" + (" (and VTK's vtkXMLPolyDataReader reads them)" if vtk else "")
+        say(not bad, f"{base}_<time>.vtp parse" + (" (and VTK's vtkXMLPolyDataReader reads them)" if vtk else " (as XML only: VTK's reader, python3-vtk9, is not installed here)")
             + f", {nx*ny} points, {(nx-1)*(ny-1)} quads, "
             f"arrays {sorted(data)} of that length and finite, at {len(ts)} times"
             + (": " + "; ".join(bad[:3]) if bad else ""))
