@@ -200,6 +200,7 @@ savageHutterFoam|base|$tp|phi|num
 savageHutterFoam|base|$tp|frictionModel|word:Coulomb
 savageHutterFoam|base|$tp|CoulombCoeffs|dict
 savageHutterFoam|base|$tp|CoulombCoeffs/delta|num
+savageHutterFoam|base|$tp|rho|optnum
 savageHutterFoam|voellmy|$tp|VoellmyCoeffs|dict
 savageHutterFoam|voellmy|$tp|VoellmyCoeffs/mu|num
 savageHutterFoam|voellmy|$tp|VoellmyCoeffs/xi|num
@@ -264,6 +265,8 @@ savageHutterFoam|zb|0/zb|dimensions|dims
 savageHutterFoam|zb|0/zb|internalField|sfield
 savageHutterFoam|zb|0/zb|boundaryField|dict
 savageHutterFoam|zb|0/zb|boundaryField/upslope/type|word:zeroGradient
+savageHutterFoam|zb|0/zb|boundaryField/downslope/type|word:zeroGradient
+savageHutterFoam|zb|0/zb|boundaryField/sides/type|word:zeroGradient
 savageHutterFoam|inflow|0/h|boundaryField/upslope/value|sfield
 savageHutterFoam|inflow|0/U|boundaryField/upslope/value|vfield
 blockMesh|mesh|$bm|nx|count|fraction=1.5,one=1,stale=8!
@@ -298,6 +301,8 @@ setAvalancheFields|pre|$sa|zb/bowl/slope|num
 setAvalancheFields|pre|$sa|zb/channel/axis|num
 setAvalancheFields|pre|$sa|zb/channel/curvature|num
 setAvalancheFields|pre|$sa|U|list
+setAvalancheFields|pre|$sa|U/box/min|vec2
+setAvalancheFields|pre|$sa|U/box/max|vec2
 setAvalancheFields|pre|$sa|U/box/value|vec
 setAvalancheFields|pre|$sa|U/damBreak/position|num
 setAvalancheFields|pre|$sa|U/damBreak/upstream|vec
