@@ -930,6 +930,59 @@ else
     fail "truncated latest time: rc $rc, message or hint missing, or something written (see $log)"
 fi
 
+# Other unreadable latest time directories (a file missing or empty, an
+# empty directory, an optional hU, hMax, UMax or uniform/time present but
+# without a header): the same message naming the file, the same hint (and
+# the rm of an optional file alone); nothing written. A value read whole
+# but invalid gets the plain validation error, without that hint.
+lat=$(newCase latestBase)
+(cd "$lat" && savageHutterFoam -backend cpu > log.1 2>&1)
+setEntry "$lat/system/controlDict" startFrom latestTime
+setEntry "$lat/system/controlDict" endTime 0.2
+#- unreadableLatest <name> <edit in the case> <message regex> [file alone]
+unreadableLatest()
+{
+    local name="$1" edit="$2" pattern="$3" alone="${4:-}"
+    local d="$work/$name"
+    rm -rf "$d" && cp -r "$lat" "$d"
+    (cd "$d" && eval "$edit" && savageHutterFoam -backend cpu > log.2 2>&1)
+    local rc=$?
+    local log="$d/log.2"
+    if [ $rc -ne 0 ] && grep -q "FOAM FATAL" "$log" && grep -qE "$pattern" "$log" \
+    && grep -q "rm -r .*/$name/0.1\"*$" "$log" && grep -q "To restart from 0.05" "$log" \
+    && { [ -z "$alone" ] || grep -q "^    rm .*/$name/0.1/$alone\"*$" "$log"; } \
+    && [ ! -d "$d/0.15" ] && [ ! -d "$d/.savageHutterFoam-writing" ] \
+    && ! grep -qE "printStack|^#[0-9]+ " "$log"
+    then
+        pass "$name: stops naming the file ($(grep -m1 -A1 "FOAM FATAL" "$log" | tail -n1 | sed "s|$work/||" | cut -c1-70)), says 'rm -r .../0.1'${alone:+ or 'rm .../0.1/$alone'}, writes nothing"
+    else
+        fail "$name: rc $rc, message '$pattern' or hint missing, or something written (see $log)"
+    fi
+}
+unreadableLatest latestMissingU "rm 0.1/U" '0\.1/U" is missing'
+unreadableLatest latestEmptyDir "rm -r 0.1/*" '0\.1/h" is missing'
+unreadableLatest latestEmptyU ": > 0.1/U" '0\.1/U" cannot be read: no FoamFile header'
+unreadableLatest latestEmptyhMax ": > 0.1/hMax" '0\.1/hMax" cannot be read' hMax
+unreadableLatest latestEmptyUMax ": > 0.1/UMax" '0\.1/UMax" cannot be read' UMax
+unreadableLatest latestHeaderlesshU "sed -i '1,/^}/d' 0.1/hU" '0\.1/hU" cannot be read' hU
+unreadableLatest latestEmptyTime ": > 0.1/uniform/time" '0\.1/uniform/time" cannot be read' uniform/time
+unreadableLatest latesthUClass "sed -i 's/volVectorField/volScalarField/' 0.1/hU" '0\.1/hU" is of class volScalarField, not volVectorField' hU
+
+d="$work/latestNegativeh"
+rm -rf "$d" && cp -r "$lat" "$d"
+foamDictionary "$d/0.1/h" -entry internalField -set "uniform -0.5" > /dev/null
+(cd "$d" && savageHutterFoam -backend cpu > log.2 2>&1)
+rc=$?
+log="$d/log.2"
+if [ $rc -ne 0 ] && grep -q "FOAM FATAL" "$log" && grep -q "^h = -0.5 in cell" "$log" \
+&& grep -q "^file: .*/latestNegativeh/0.1/h$" "$log" && ! grep -q "rm -r\|cut it short" "$log" \
+&& [ ! -d "$d/0.15" ]
+then
+    pass "latestNegativeh: h = -0.5 in the start time is the plain validation error naming 0.1/h, no 'rm -r' hint, nothing written"
+else
+    fail "latestNegativeh: rc $rc, validation error missing or an 'rm -r' hint given (see $log)"
+fi
+
 # purgeWrite 2 keeps the last two time directories of the run
 d=$(newCase purgeWrite)
 setEntry "$d/system/controlDict" purgeWrite 2
