@@ -804,68 +804,104 @@ else
     fail "live controlDict: rc $rc, change at '$tChange', off the 0.02 grid:${offGrid:- none}, $after after, last '$final' (endTime $end) (see $log)"
 fi
 
-# An invalid change is reported and ignored; stopAt writeNow writes the
-# state wherever the run is and ends it
-d=$(liveCase liveWriteNow)
+# The stop modes, with writeInterval 50 (no regular write time within the
+# test, about 0.06 s of simulated time per second here): writeNow writes
+# the state where the change is seen, off the write grid, and ends the run;
+# noWriteNow ends it writing nothing; nextWrite (writeInterval 0.5 there)
+# runs on and ends at the first write time after the change; an endTime
+# already passed ends the run at once, writing the state. An invalid change
+# is reported and ignored.
+#- changedAt <log> <regex>: t of the "controlDict changed" line matching
+changedAt()
+{
+    sed -n "s/^controlDict changed at t = \([^:]*\):.*$2.*/\1/p" "$1" | head -n1
+}
+#- stoppedAt <log> <by>: t and directory of "Stopped by <by> at t = ..."
+stoppedAt()
+{
+    sed -n "s/^Stopped by $2 at t = \([^,]*\), written to \([^ ]*\) .*/\1 \2/p" "$1"
+}
+#- liveStop <name> <writeInterval> <seconds to wait> <keyword> <value>...:
+#  run the live case, change the entries after the start, wait for the end
+liveStop()
+{
+    local d
+    d=$(liveCase "$1")
+    setEntry "$d/system/controlDict" writeInterval "$2"
+    local wait="$3"
+    shift 3
+    (cd "$d" && exec savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1) &
+    local pid=$!
+    waitFor "$d/log.savageHutterFoam" "^Starting time loop" 60
+    sleep 0.3
+    if [ "$1" = "invalid" ]
+    then
+        shift
+        liveEdit "$d" writeInterval 0
+        waitFor "$d/log.savageHutterFoam" "is invalid; the run goes on as before" 20
+    fi
+    liveEdit "$d" "$@"
+    waitFor "$d/log.savageHutterFoam" "^End" "$wait" || kill -TERM "$pid"
+    wait "$pid"
+    echo $? > "$d/rc"
+}
+
+liveStop liveWriteNow 50 60 invalid writeInterval 50 stopAt writeNow
+d="$work/liveWriteNow"
 log="$d/log.savageHutterFoam"
-(cd "$d" && exec savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1) &
-pid=$!
-waitFor "$log" "^Starting time loop" 60
-sleep 0.3
-liveEdit "$d" writeInterval 0
-waitFor "$log" "is invalid; the run goes on as before" 20
-invalidSeen=$?
-liveEdit "$d" writeInterval 0.05 stopAt writeNow
-waitFor "$log" "^End" 60 || kill -TERM "$pid"
-wait "$pid"
-rc=$?
-stopDir=$(sed -n 's/^Stopped by stopAt writeNow at t = .*, written to \([^ ]*\) .*/\1/p' "$log")
-if [ $rc -eq 0 ] && [ $invalidSeen -eq 0 ] && grep -q "Invalid writeInterval '0'" "$log" \
-&& [ -n "$stopDir" ] && complete "$d" "$stopDir" \
-&& [ "$(timeDirs "$d" | sort -g | tail -n1)" = "$stopDir" ]
+tChange=$(changedAt "$log" "stopAt writeNow;")
+read -r tStop stopDir <<< "$(stoppedAt "$log" "stopAt writeNow")"
+if [ "$(cat "$d/rc")" = 0 ] && grep -q "Invalid writeInterval '0'" "$log" \
+&& [ -n "$tChange" ] && [ "$tStop" = "$tChange" ] && [ -n "$stopDir" ] \
+&& [ "$(timeDirs "$d" | tr '\n' ' ')" = "$stopDir " ] && complete "$d" "$stopDir" \
+&& ! onGrid "$stopDir" 50
 then
-    pass "live controlDict: writeInterval 0 reported and ignored; stopAt writeNow wrote $stopDir and ended the run"
+    pass "live controlDict: writeInterval 0 reported and ignored; stopAt writeNow seen at t = $tChange wrote $stopDir (off the write grid of 50, the only directory) and ended the run"
 else
-    fail "live controlDict: invalid change seen $invalidSeen, rc $rc, writeNow dir '$stopDir' (see $log)"
+    fail "live controlDict: writeNow rc $(cat "$d/rc"), change at '$tChange', stop at '$tStop' in '$stopDir', directories: $(timeDirs "$d" | tr '\n' ' ') (see $log)"
 fi
 
-# stopAt nextWrite ends the run at the next write time; noWriteNow ends it
-# without writing
-d=$(liveCase liveNextWrite)
-setEntry "$d/system/controlDict" writeInterval 0.25
+liveStop liveNoWriteNow 50 60 stopAt noWriteNow
+d="$work/liveNoWriteNow"
 log="$d/log.savageHutterFoam"
-(cd "$d" && exec savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1) &
-pid=$!
-waitFor "$log" "^Starting time loop" 60
-sleep 0.3
-liveEdit "$d" stopAt nextWrite
-waitFor "$log" "^End" 120 || kill -TERM "$pid"
-wait "$pid"
-rcNext=$?
-nextDir=$(sed -n 's/^Stopped by stopAt nextWrite at t = .*, written to \([^ ]*\) .*/\1/p' "$log")
-d2=$(liveCase liveNoWriteNow)
-log2="$d2/log.savageHutterFoam"
-(cd "$d2" && exec savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1) &
-pid=$!
-waitFor "$log2" "^Starting time loop" 60
-sleep 0.5
-liveEdit "$d2" stopAt noWriteNow
-waitFor "$log2" "^End" 60 || kill -TERM "$pid"
-wait "$pid"
-rcNo=$?
-offGrid=""
-for t in $(timeDirs "$d2")
-do
-    onGrid "$t" 0.05 || offGrid="$offGrid $t"
-done
-if [ $rcNext -eq 0 ] && [ -n "$nextDir" ] && onGrid "$nextDir" 0.25 && complete "$d" "$nextDir" \
-&& [ "$(timeDirs "$d" | sort -g | tail -n1)" = "$nextDir" ] \
-&& [ $rcNo -eq 0 ] && grep -q "^Stopped by stopAt noWriteNow at t = .*, not written" "$log2" \
-&& [ -z "$offGrid" ]
+tChange=$(changedAt "$log" "stopAt noWriteNow;")
+if [ "$(cat "$d/rc")" = 0 ] && [ -n "$tChange" ] \
+&& grep -q "^Stopped by stopAt noWriteNow at t = $tChange, not written" "$log" \
+&& [ -z "$(timeDirs "$d")" ] && [ ! -d "$d/.savageHutterFoam-writing" ]
 then
-    pass "live controlDict: stopAt nextWrite ended the run at the write time $nextDir; stopAt noWriteNow ended it with nothing written off the write times"
+    pass "live controlDict: stopAt noWriteNow seen at t = $tChange ended the run with no directory written"
 else
-    fail "live controlDict: nextWrite rc $rcNext dir '$nextDir'; noWriteNow rc $rcNo, written off the grid:${offGrid:- none} (see $log, $log2)"
+    fail "live controlDict: noWriteNow rc $(cat "$d/rc"), change at '$tChange', directories: $(timeDirs "$d" | tr '\n' ' ') (see $log)"
+fi
+
+liveStop liveNextWrite 0.5 120 stopAt nextWrite
+d="$work/liveNextWrite"
+log="$d/log.savageHutterFoam"
+tChange=$(changedAt "$log" "stopAt nextWrite;")
+read -r tStop nextDir <<< "$(stoppedAt "$log" "stopAt nextWrite")"
+expected=$(python3 -c "import math; print('%.6g' % ((math.floor(${tChange:-0}/0.5 + 1e-9) + 1)*0.5))")
+if [ "$(cat "$d/rc")" = 0 ] && [ -n "$tChange" ] && [ "$nextDir" = "$expected" ] \
+&& python3 -c "import sys; sys.exit(not $tChange < $tStop)" \
+&& [ "$(timeDirs "$d" | sort -g | tail -n1)" = "$nextDir" ] && complete "$d" "$nextDir" \
+&& [ -z "$(timeDirs "$d" | while read -r t; do python3 -c "import sys; sys.exit(not $tChange < $t < $nextDir)" && echo "$t"; done)" ]
+then
+    pass "live controlDict: stopAt nextWrite seen at t = $tChange: the run went on to the next write time $nextDir and ended there"
+else
+    fail "live controlDict: nextWrite rc $(cat "$d/rc"), change at '$tChange', stopped at '$tStop' in '$nextDir' (expected $expected) (see $log)"
+fi
+
+liveStop liveEndTimePassed 50 60 endTime 0.001
+d="$work/liveEndTimePassed"
+log="$d/log.savageHutterFoam"
+tChange=$(changedAt "$log" "endTime 100 -> 0.001;")
+read -r tStop stopDir <<< "$(stoppedAt "$log" "endTime")"
+if [ "$(cat "$d/rc")" = 0 ] && [ -n "$tChange" ] && [ "$tStop" = "$tChange" ] \
+&& python3 -c "import sys; sys.exit(not $tChange > 0.001)" \
+&& [ "$(timeDirs "$d" | tr '\n' ' ')" = "$stopDir " ] && complete "$d" "$stopDir"
+then
+    pass "live controlDict: endTime 100 -> 0.001, already passed at t = $tChange: the run ended at once, writing $stopDir"
+else
+    fail "live controlDict: endTime passed: rc $(cat "$d/rc"), change at '$tChange', stop at '$tStop' in '$stopDir', directories: $(timeDirs "$d" | tr '\n' ' ') (see $log)"
 fi
 
 # writeControl adjustableRunTime -> timeStep (every 20 steps) during the
@@ -928,6 +964,59 @@ then
     pass "truncated latest time: stops naming $(grep -oE '[^ ]*0\.1/U[^ ]* at line [0-9]+' "$log" | head -n1 | sed "s|$work/||"), says 'rm -r .../0.1', writes nothing"
 else
     fail "truncated latest time: rc $rc, message or hint missing, or something written (see $log)"
+fi
+
+# Other unreadable latest time directories (a file missing or empty, an
+# empty directory, an optional hU, hMax, UMax or uniform/time present but
+# without a header): the same message naming the file, the same hint (and
+# the rm of an optional file alone); nothing written. A value read whole
+# but invalid gets the plain validation error, without that hint.
+lat=$(newCase latestBase)
+(cd "$lat" && savageHutterFoam -backend cpu > log.1 2>&1)
+setEntry "$lat/system/controlDict" startFrom latestTime
+setEntry "$lat/system/controlDict" endTime 0.2
+#- unreadableLatest <name> <edit in the case> <message regex> [file alone]
+unreadableLatest()
+{
+    local name="$1" edit="$2" pattern="$3" alone="${4:-}"
+    local d="$work/$name"
+    rm -rf "$d" && cp -r "$lat" "$d"
+    (cd "$d" && eval "$edit" && savageHutterFoam -backend cpu > log.2 2>&1)
+    local rc=$?
+    local log="$d/log.2"
+    if [ $rc -ne 0 ] && grep -q "FOAM FATAL" "$log" && grep -qE "$pattern" "$log" \
+    && grep -q "rm -r .*/$name/0.1\"*$" "$log" && grep -q "To restart from 0.05" "$log" \
+    && { [ -z "$alone" ] || grep -q "^    rm .*/$name/0.1/$alone\"*$" "$log"; } \
+    && [ ! -d "$d/0.15" ] && [ ! -d "$d/.savageHutterFoam-writing" ] \
+    && ! grep -qE "printStack|^#[0-9]+ " "$log"
+    then
+        pass "$name: stops naming the file ($(grep -m1 -A1 "FOAM FATAL" "$log" | tail -n1 | sed "s|$work/||" | cut -c1-70)), says 'rm -r .../0.1'${alone:+ or 'rm .../0.1/$alone'}, writes nothing"
+    else
+        fail "$name: rc $rc, message '$pattern' or hint missing, or something written (see $log)"
+    fi
+}
+unreadableLatest latestMissingU "rm 0.1/U" '0\.1/U" is missing'
+unreadableLatest latestEmptyDir "rm -r 0.1/*" '0\.1/h" is missing'
+unreadableLatest latestEmptyU ": > 0.1/U" '0\.1/U" cannot be read: no FoamFile header'
+unreadableLatest latestEmptyhMax ": > 0.1/hMax" '0\.1/hMax" cannot be read' hMax
+unreadableLatest latestEmptyUMax ": > 0.1/UMax" '0\.1/UMax" cannot be read' UMax
+unreadableLatest latestHeaderlesshU "sed -i '1,/^}/d' 0.1/hU" '0\.1/hU" cannot be read' hU
+unreadableLatest latestEmptyTime ": > 0.1/uniform/time" '0\.1/uniform/time" cannot be read' uniform/time
+unreadableLatest latesthUClass "sed -i 's/volVectorField/volScalarField/' 0.1/hU" '0\.1/hU" is of class volScalarField, not volVectorField' hU
+
+d="$work/latestNegativeh"
+rm -rf "$d" && cp -r "$lat" "$d"
+foamDictionary "$d/0.1/h" -entry internalField -set "uniform -0.5" > /dev/null
+(cd "$d" && savageHutterFoam -backend cpu > log.2 2>&1)
+rc=$?
+log="$d/log.2"
+if [ $rc -ne 0 ] && grep -q "FOAM FATAL" "$log" && grep -q "^h = -0.5 in cell" "$log" \
+&& grep -q "^file: .*/latestNegativeh/0.1/h$" "$log" && ! grep -q "rm -r\|cut it short" "$log" \
+&& [ ! -d "$d/0.15" ]
+then
+    pass "latestNegativeh: h = -0.5 in the start time is the plain validation error naming 0.1/h, no 'rm -r' hint, nothing written"
+else
+    fail "latestNegativeh: rc $rc, validation error missing or an 'rm -r' hint given (see $log)"
 fi
 
 # purgeWrite 2 keeps the last two time directories of the run

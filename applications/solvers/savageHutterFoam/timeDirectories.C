@@ -211,6 +211,29 @@ namespace
             << " " << times[before].name() << ", the time before it:" << nl
             << "    rm -r " << startDir << nl;
     }
+    else if (inStart)
+    {
+        Perr<< nl << "The start time directory " << runTime.timeName()
+            << " cannot be read (above). Nothing is written." << nl;
+    }
+    if (inStart)
+    {
+        // Files the run can do without (each loses something)
+        const word name = fileName(file).name();
+        const char* without =
+            name == "hU" ? "the restart then takes h U as the momentum,"
+            " not bit for bit"
+          : name == "hMax" || name == "UMax"
+          ? "the peak maps then start again from the start time's state"
+          : name == "time" ? "the start time is then read from the"
+            " directory's name, to its timePrecision digits"
+          : nullptr;
+        if (without)
+        {
+            Perr<< "Or remove only this file (" << without << "):" << nl
+                << "    rm " << file << nl;
+        }
+    }
     Perr<< nl << "FOAM exiting" << nl << endl;
     std::exit(1);
 }
@@ -229,6 +252,28 @@ void reportUnreadable(const Time& runTime, const error& err)
 {
     Perr<< nl << err << nl;
     hintAndExit(runTime, string::null);
+}
+
+
+void reportUnreadableFile
+(
+    const Time& runTime,
+    const fileName& file,
+    const string& why
+)
+{
+    const bool throws = FatalIOError.throwExceptions();
+    try
+    {
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file)
+            << file << " " << why.c_str() << nl << exit(FatalIOError);
+    }
+    catch (const IOerror& e)
+    {
+        FatalIOError.throwExceptions(throws);
+        reportUnreadable(runTime, e);
+    }
+    std::abort();
 }
 
 
