@@ -43,14 +43,20 @@ restore0Dir
 
 timeDirs() { ls -d [0-9]* 2>/dev/null | grep -E '^[0-9.e+-]+$' | grep -v '^0$' | sort -g; }
 now() { date +%s.%N; }
+#- startRun: savageHutterFoam -backend cuda in the background (pid in $pid),
+#  3 s into its time loop
+startRun()
+{
+    savageHutterFoam -backend cuda > log.savageHutterFoam 2>&1 &
+    pid=$!
+    for _ in $(seq 1 600); do
+        grep -q "Starting time loop" log.savageHutterFoam 2>/dev/null && break
+        sleep 0.1
+    done
+    sleep 3
+}
 
-savageHutterFoam -backend cuda > log.savageHutterFoam 2>&1 &
-pid=$!
-for _ in $(seq 1 600); do
-    grep -q "Starting time loop" log.savageHutterFoam 2>/dev/null && break
-    sleep 0.1
-done
-sleep 3
+startRun
 
 # SIGUSR1: write and go on
 kill -USR1 "$pid"
@@ -106,13 +112,7 @@ rm -rf $(timeDirs) postProcessing
 setEntry system/controlDict startFrom startTime
 setEntry system/controlDict endTime 1000
 setEntry system/controlDict writeInterval 1000
-savageHutterFoam -backend cuda > log.savageHutterFoam 2>&1 &
-pid=$!
-for _ in $(seq 1 600); do
-    grep -q "Starting time loop" log.savageHutterFoam 2>/dev/null && break
-    sleep 0.1
-done
-sleep 3
+startRun
 kill -INT "$pid"
 t0=$(now)
 wait "$pid"

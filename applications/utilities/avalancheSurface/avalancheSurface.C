@@ -177,6 +177,30 @@ std::vector<float> toFloat(const std::vector<terrain::vec3>& v)
     return f;
 }
 
+
+//- Write text to path through path.tmp and a rename, so that a reader
+//  never sees a half-written file
+void writeReplacing(const fileName& path, const std::string& text)
+{
+    const fileName tmp = path + ".tmp";
+    {
+        std::ofstream f(tmp);
+        f << text;
+        f.flush();
+        if (!f)
+        {
+            FatalErrorInFunction
+                << "Cannot write " << tmp << nl << exit(FatalError);
+        }
+    }
+    if (std::rename(tmp.c_str(), path.c_str()) != 0)
+    {
+        FatalErrorInFunction
+            << "Cannot rename " << tmp << " to " << path << nl
+            << exit(FatalError);
+    }
+}
+
 //- A .vtp file: points (Float64), quads (or lines) over the nx x ny grid
 //  of points, point data (Float32), VTK XML binary (base64)
 void writeVtp
@@ -250,23 +274,7 @@ void writeVtp
     os << "</" << block << ">\n"
        << "</Piece>\n</PolyData>\n</VTKFile>\n";
 
-    const fileName tmp = path + ".tmp";
-    {
-        std::ofstream f(tmp);
-        f << os.str();
-        f.flush();
-        if (!f)
-        {
-            FatalErrorInFunction
-                << "Cannot write " << tmp << nl << exit(FatalError);
-        }
-    }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0)
-    {
-        FatalErrorInFunction
-            << "Cannot rename " << tmp << " to " << path << nl
-            << exit(FatalError);
-    }
+    writeReplacing(path, os.str());
 }
 
 //- <dir>/<base>.vtp.series: the <base>_<time>.vtp files of dir whose time
@@ -304,23 +312,7 @@ void writeSeries
     }
     os << "  ]\n}\n";
     const fileName path = dir/(base + ".vtp.series");
-    const fileName tmp = path + ".tmp";
-    {
-        std::ofstream f(tmp);
-        f << os.str();
-        f.flush();
-        if (!f)
-        {
-            FatalErrorInFunction
-                << "Cannot write " << tmp << nl << exit(FatalError);
-        }
-    }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0)
-    {
-        FatalErrorInFunction
-            << "Cannot rename " << tmp << " to " << path << nl
-            << exit(FatalError);
-    }
+    writeReplacing(path, os.str());
     Info<< "Wrote " << path << " (" << files.size() << " times)" << nl;
 }
 
