@@ -54,7 +54,7 @@ const wordList solverKeywords
 const wordList transportKeywords
 ({
     "g", "epsilon", "lambda", "inclination", "earthPressure", "phi",
-    "frictionModel", "rho"
+    "frictionModel", "rho", "arrivalThreshold"
 });
 
 } // namespace
@@ -131,8 +131,15 @@ caseInput::caseInput(const fvMesh& mesh)
                 << "rho = " << rho << ": the density [kg/m^3] must be"
                 << " positive and at most 1e30" << nl << exit(FatalIOError);
         }
-        Info<< "    rho           " << rho << " kg/m^3 (peak pressure)" << nl;
+        model.rho = rho;
+        Info<< "    rho           " << rho << " kg/m^3 (peak pressure pMax)"
+            << nl;
     }
+    // The arrival time's threshold, validated with the model (makeParams)
+    model.arrivalThreshold =
+        tp.getOrDefault<scalar>("arrivalThreshold", 0.01);
+    Info<< "    arrivalThreshold " << model.arrivalThreshold
+        << " m (arrival time tArrival)" << nl;
 
     friction_ = frictionModel::New(tp);
     friction_->set(model);

@@ -19,9 +19,12 @@ Description
 
     Written at write times: h, U, hU (the conserved momentum, read back on
     restart so that a restart continues exactly), zb, regime (0 dry,
-    1 at rest, 2 moving), and the hazard maps hMax and UMax: the largest
-    thickness and speed of each cell since the start of the run (read back
-    on restart, so that they cover the whole simulation).
+    1 at rest, 2 moving), and the hazard maps hMax and UMax, the largest
+    thickness and speed of each cell since the start of the run, pMax
+    (with rho in transportProperties), the largest rho |u|^2 [Pa], and
+    tArrival, the first time h exceeded arrivalThreshold (-1 where never):
+    updated every step, read back on restart, so that they cover the whole
+    simulation.
 
     Every controlDict entry the run depends on is checked before Time reads
     it (controlSettings); time directories appear complete or not at all

@@ -225,6 +225,11 @@ namespace
             " not bit for bit"
           : name == "hMax" || name == "UMax"
           ? "the peak maps then start again from the start time's state"
+          : name == "pMax"
+          ? "pMax then continues from rho UMax^2, to round-off"
+          : name == "tArrival"
+          ? "cells already reached then take the start time as arrival"
+            " time"
           : name == "time" ? "the start time is then read from the"
             " directory's name, to its timePrecision digits"
           : nullptr;

@@ -15,8 +15,10 @@ template<class Real>
 CpuSolver<Real>::CpuSolver(const Problem<Real>& pb, bool parallel)
 :
     geometry_(pb),
-    parallel_(parallel)
+    parallel_(parallel),
+    peaks_(pb)
 {
+    this->time_ = pb.startTime;
     model_.p = pb.params;
     model_.g = pb.grid;
     model_.bc = pb.bc;
@@ -34,10 +36,6 @@ CpuSolver<Real>::CpuSolver(const Problem<Real>& pb, bool parallel)
     U_.hu = toPadded(g, pb.hu);
     U_.hv = toPadded(g, pb.hv);
     Unew_ = U_;
-
-    const HostPeaks<Real> peaks(pb);
-    hPeak_ = peaks.h;
-    speedPeak_ = peaks.speed;
 }
 
 
@@ -83,7 +81,7 @@ Real CpuSolver<Real>::stableDt()
 
 
 template<class Real>
-void CpuSolver<Real>::advanceStep(Real dt)
+void CpuSolver<Real>::advanceStep(Real dt, double tNew)
 {
     const Grid<Real>& g = model_.g;
     const Model<Real>& m = model_;
@@ -167,6 +165,7 @@ void CpuSolver<Real>::advanceStep(Real dt)
     }
     speedClips_ += clips;
 
+    const PeakFields<Real> P = peaks_.view();
     long long wet = 0;
     #pragma omp parallel for if(parallel_) reduction(+:wet) schedule(static)
     for (int j = 0; j < ny; ++j)
@@ -174,7 +173,7 @@ void CpuSolver<Real>::advanceStep(Real dt)
         for (int i = 0; i < nx; ++i)
         {
             partialWetCell(m, Un, i, j);
-            updatePeaks(m, Un, hPeak_.data(), speedPeak_.data(), i, j);
+            updatePeaks(m, Un, P, tNew, i, j);
             wet += Un.h[g.idx(i, j)] > m.p.hDry ? 1 : 0;
         }
     }
@@ -199,14 +198,13 @@ void CpuSolver<Real>::getState
 
 
 template<class Real>
-void CpuSolver<Real>::getPeaks
-(
-    std::vector<Real>& hPeak,
-    std::vector<Real>& speedPeak
-)
+PeakMaps<Real> CpuSolver<Real>::peakMaps()
 {
-    toInterior(model_.g, hPeak_.data(), hPeak);
-    toInterior(model_.g, speedPeak_.data(), speedPeak);
+    return HostPeaks<Real>::maps
+    (
+        model_.g, model_.p, peaks_.h.data(), peaks_.speed2.data(),
+        peaks_.arrival.data()
+    );
 }
 
 

@@ -228,6 +228,8 @@ Params<Real> makeParams(const ModelInput& in)
     requireFinite("xi", in.voellmy.xi);
     requireFinite("hDry", in.hDry);
     requireFinite("maxCo", in.cfl);
+    requireFinite("arrivalThreshold", in.arrivalThreshold);
+    requireFinite("rho", in.rho);
 
     if (in.g <= 0)
     {
@@ -300,6 +302,25 @@ Params<Real> makeParams(const ModelInput& in)
         );
     }
 
+    if (!(in.arrivalThreshold > 0))
+    {
+        throw InputError
+        (
+            "arrivalThreshold",
+            "the thickness above which material has arrived (tArrival) must"
+            " lie in (0, 1e30] m, got " + str(in.arrivalThreshold)
+        );
+    }
+    if (!(in.rho >= 0))
+    {
+        throw InputError
+        (
+            "rho",
+            "the density must lie in (0, 1e30] kg/m^3 (0: no pressure map),"
+            " got " + str(in.rho)
+        );
+    }
+
     const double phi = in.phiDeg*degToRad;
     const double delta = deltaDeg*degToRad;
 
@@ -347,6 +368,8 @@ Params<Real> makeParams(const ModelInput& in)
     p.holdResting = in.holdResting;
     p.hDry = Real(in.hDry);
     p.cfl = Real(in.cfl);
+    p.arrivalThreshold = Real(in.arrivalThreshold);
+    p.rho = Real(in.rho);
     return p;
 }
 

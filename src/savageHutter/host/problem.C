@@ -2,7 +2,9 @@
 #include "modelInput.H"
 #include "padded.H"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -379,14 +381,97 @@ HostGeometry<Real>::HostGeometry(const Problem<Real>& pb)
 }
 
 template<class Real>
+bool squaredSpeedPeak
+(
+    const Real speed,
+    const Real pressure,
+    const Real rho,
+    const bool hasPressure,
+    Real& S
+)
+{
+    const Real inf = std::numeric_limits<Real>::infinity();
+    const auto fits = [speed](Real s) { return std::sqrt(s) == speed; };
+
+    // One S with sqrt(S) == speed: speed^2 (in binary floating point
+    // sqrt(speed^2) == speed, barring overflow), else its neighbours
+    Real s = speed*speed;
+    for (int k = 0; k < 4 && !fits(s); ++k)
+    {
+        s = std::nextafter(s, std::sqrt(s) < speed ? inf : Real(0));
+    }
+    if (!fits(s))
+    {
+        S = speed*speed;
+        return false;
+    }
+    // The interval of such S (a few values)
+    Real lo = s, hi = s;
+    for (int k = 0; k < 16 && lo > Real(0) && fits(std::nextafter(lo, Real(0))); ++k)
+    {
+        lo = std::nextafter(lo, Real(0));
+    }
+    for (int k = 0; k < 16 && fits(std::nextafter(hi, inf)); ++k)
+    {
+        hi = std::nextafter(hi, inf);
+    }
+    S = s;
+    if (!hasPressure || !(rho > Real(0)))
+    {
+        return false;
+    }
+    for (Real x = lo; x <= hi; x = std::nextafter(x, inf))
+    {
+        if (rho*x == pressure)
+        {
+            S = x;
+            return true;
+        }
+    }
+    S = std::min(std::max(Real(pressure/rho), lo), hi);
+    return false;
+}
+
+
+template<class Real>
 HostPeaks<Real>::HostPeaks(const Problem<Real>& pb)
 {
     const Grid<Real>& g = pb.grid;
-    const bool given = pb.hPeak.size() == std::size_t(pb.nCells())
-                    && pb.speedPeak.size() == std::size_t(pb.nCells());
-    h = given ? toPadded(g, pb.hPeak) : std::vector<Real>(g.size(), Real(0));
-    speed =
-        given ? toPadded(g, pb.speedPeak) : std::vector<Real>(g.size(), Real(0));
+    const std::size_t n = std::size_t(pb.nCells());
+    const PeakMaps<Real>& in = pb.peaks;
+    const bool given = in.h.size() == n && in.speed.size() == n;
+    const bool withPressure = given && in.pressure.size() == n;
+    const bool withArrival = given && in.arrival.size() == n;
+    const Real rho = pb.params.rho;
+    h.assign(g.size(), Real(0));
+    speed2.assign(g.size(), Real(0));
+    arrival.assign(g.size(), -1.0f);
+    for (int j = 0; j < g.ny && given; ++j)
+    {
+        for (int i = 0; i < g.nx; ++i)
+        {
+            const int k = pb.cell(i, j);
+            const int c = g.idx(i, j);
+            h[c] = in.h[k];
+            Real S = 0;
+            const bool matched = squaredSpeedPeak
+            (
+                in.speed[k], withPressure ? in.pressure[k] : Real(0), rho,
+                withPressure, S
+            );
+            pressuresIgnored += withPressure && rho > Real(0) && !matched;
+            speed2[c] = S;
+            if (withArrival)
+            {
+                arrival[c] = in.arrival[k];
+            }
+            if (h[c] > pb.params.arrivalThreshold && !(arrival[c] >= 0))
+            {
+                arrival[c] = float(pb.startTime);
+                ++arrivalsSet;
+            }
+        }
+    }
 
     // Raised to the initial state, as the backends hold it
     std::vector<Real> q[3] =
@@ -395,13 +480,44 @@ HostPeaks<Real>::HostPeaks(const Problem<Real>& pb)
     m.p = pb.params;
     m.g = g;
     const Fields<Real> U{q[0].data(), q[1].data(), q[2].data()};
+    const PeakFields<Real> P = view();
     for (int j = 0; j < g.ny; ++j)
     {
         for (int i = 0; i < g.nx; ++i)
         {
-            updatePeaks(m, U, h.data(), speed.data(), i, j);
+            updatePeaks(m, U, P, pb.startTime, i, j);
         }
     }
+}
+
+
+template<class Real>
+PeakMaps<Real> HostPeaks<Real>::maps
+(
+    const Grid<Real>& g,
+    const Params<Real>& p,
+    const Real* hPad,
+    const Real* speed2Pad,
+    const float* arrivalPad
+)
+{
+    PeakMaps<Real> r;
+    toInterior(g, hPad, r.h);
+    toInterior(g, speed2Pad, r.speed);
+    toInterior(g, arrivalPad, r.arrival);
+    if (p.rho > Real(0))
+    {
+        r.pressure.resize(r.speed.size());
+        for (std::size_t k = 0; k < r.speed.size(); ++k)
+        {
+            r.pressure[k] = p.rho*r.speed[k];
+        }
+    }
+    for (Real& s : r.speed)
+    {
+        s = std::sqrt(s);
+    }
+    return r;
 }
 
 
@@ -425,5 +541,7 @@ template struct HostGeometry<double>;
 template struct HostGeometry<float>;
 template struct HostPeaks<double>;
 template struct HostPeaks<float>;
+template bool squaredSpeedPeak(double, double, double, bool, double&);
+template bool squaredSpeedPeak(float, float, float, bool, float&);
 
 } // namespace sh
