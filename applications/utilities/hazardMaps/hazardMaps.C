@@ -8,21 +8,25 @@ Description
     Hazard maps of a terrain case (made by terrainToCase) on the DEM's grid
     and georeference, and a report of volumes, runout and travel angles.
     Run in the case directory after savageHutterFoam; reads
-    constant/terrainMapping and, at the chosen time (default the latest),
-    hMax, UMax, h and zb, and pMax and tArrival when the solver wrote them.
-    Without a pMax field and with rho in constant/transportProperties,
-    pMax = rho UMax^2 (exact: the peak of |u|^2 is the square of the peak
-    of |u|).
+    constant/terrainMapping and, at each chosen time (default the latest),
+    hMax, UMax, pMax, tArrival, h and zb as savageHutterFoam wrote them.
+    pMax is the solver's field (rho |u|^2 peaked every step; written when
+    constant/transportProperties has rho); without it, rho UMax^2 from the
+    rho of transportProperties (the same to round-off: the peak of |u|^2
+    is the square of the peak of |u|); with neither, an error.  A run of
+    an older version without tArrival gets no arrival-time map (said so).
 
-    Writes postProcessing/hazardMaps/<time>/:
+    Writes postProcessing/hazardMaps/<time>/ for each time:
         hMax, UMax, pMax, deposit (h at that time), tArrival
                         as .asc and .tif: each DEM pixel takes the value of
                         the mesh cell that holds the foot of its normal on
                         the reference surface; nodata (-9999) outside the
-                        mesh and where hMax <= threshold (outside the flow)
+                        mesh and where hMax <= threshold (outside the
+                        flow), and in tArrival where the material never
+                        arrived (-1: h never exceeded arrivalThreshold)
         report.dat      lines "key value":
             releasedVolume  sum of h dA at the first time directory [m^3]
-            depositVolume   sum of h dA at the chosen time [m^3]
+            depositVolume   sum of h dA at that time [m^3]
             runoutX/Y/Z     world position of the bed in the cell furthest
                             along the axis with hMax > threshold (of that
                             row of cells, the one with the largest hMax)
@@ -30,14 +34,19 @@ Description
                             highest released point to the runout point
             comTravelAngle  [deg] the same between the centres of mass of
                             the release and of the material at that time
+    Every chosen time is checked (hMax, UMax, h, and pMax or rho) before
+    anything is written.
 
 Usage
-    hazardMaps [-time <time>] [-threshold 0.01]
+    hazardMaps [-time <ranges> | -latestTime] [-threshold 0.01]
+        -time 10,20, -time '10:30' (OpenFOAM's time ranges; a single value
+        picks the nearest time), -latestTime; default: the latest time
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
 #include "vector2D.H"
 #include "OSspecific.H"
+#include "timeSelector.H"
 
 #include "gdalIO.H"
 #include "referenceSurface.H"
@@ -78,6 +87,24 @@ scalar travelAngle(const terrain::vec3& a, const terrain::vec3& b)
     return radToDeg(std::atan2(a[2] - b[2], dist));
 }
 
+//- Which fields a time directory lacks for the maps ("" if none)
+word missingFields(const fvMesh& mesh, const word& t, const bool hasRho)
+{
+    word missing;
+    for (const word& name : {"hMax", "UMax", "h"})
+    {
+        if (!hasField(mesh, t, name))
+        {
+            missing += " " + name;
+        }
+    }
+    if (!hasRho && !hasField(mesh, t, "pMax"))
+    {
+        missing += " pMax";
+    }
+    return missing;
+}
+
 } // namespace
 
 
@@ -86,9 +113,10 @@ int main(int argc, char *argv[])
     argList::addNote
     (
         "Hazard maps (hMax, UMax, pMax, deposit, tArrival) of a terrain case"
-        " as rasters on the DEM's grid, and a runout report"
+        " as rasters on the DEM's grid, and a runout report, for each chosen"
+        " time (default: the latest)"
     );
-    argList::addOption("time", "time", "the time to map (default: latest)");
+    timeSelector::addOptions(false, false);
     argList::addOption
     (
         "threshold", "scalar",
@@ -108,10 +136,9 @@ int main(int argc, char *argv[])
             << nl << exit(FatalError);
     }
 
-    instantList times = runTime.times();
-    // Only numeric time directories (times() also lists constant)
+    // Numeric time directories (times() also lists constant)
     instantList numeric;
-    for (const instant& t : times)
+    for (const instant& t : runTime.times())
     {
         if (t.name() != runTime.constant())
         {
@@ -124,30 +151,35 @@ int main(int argc, char *argv[])
             << "No time directory in " << runTime.path() << nl
             << exit(FatalError);
     }
-    instant chosen = numeric.last();
-    if (args.found("time"))
+    instantList chosen;
+    if (args.found("time") || args.found("latestTime"))
     {
-        const word want = args.get<word>("time");
-        bool found = false;
-        for (const instant& t : numeric)
+        for
+        (
+            const instant& t
+          : timeSelector::select(runTime.times(), args, runTime.constant())
+        )
         {
-            if (t.name() == want || t.equal(readScalar(want)))
+            if (t.name() != runTime.constant())
             {
-                chosen = t;
-                found = true;
+                chosen.append(t);
             }
         }
-        if (!found)
-        {
-            FatalErrorInFunction
-                << "-time " << want << ": no such time directory; times: "
-                << flatOutput(numeric) << nl << exit(FatalError);
-        }
     }
-    runTime.setTime(chosen, 0);
+    else
+    {
+        chosen.append(numeric.last());
+    }
+    if (chosen.empty())
+    {
+        FatalErrorInFunction
+            << "No time selected in " << runTime.path() << "; times: "
+            << flatOutput(numeric) << nl << exit(FatalError);
+    }
+    runTime.setTime(chosen.first(), 0);
     const word first = numeric.first().name();
-    Info<< "Time " << chosen.name() << " (release from time " << first << ")"
-        << nl << endl;
+    Info<< "Times " << flatOutput(chosen) << " (release from time " << first
+        << ")" << nl << endl;
 
     #include "createMesh.H"
 
@@ -201,6 +233,61 @@ int main(int argc, char *argv[])
             << "keyword 'dem': " << e.what() << nl << exit(FatalIOError);
     }
 
+    // rho of transportProperties: pMax where the solver wrote none
+    const IOdictionary tp
+    (
+        IOobject
+        (
+            "transportProperties", runTime.constant(), runTime,
+            IOobject::MUST_READ, IOobject::NO_WRITE
+        )
+    );
+    const bool hasRho = tp.found("rho");
+    const scalar rho = tp.getOrDefault<scalar>("rho", 0);
+    if (hasRho && (!(rho > 0) || !(rho < 1e30)))
+    {
+        FatalIOErrorInFunction(tp)
+            << "keyword 'rho' = " << rho << ": must be > 0" << nl
+            << exit(FatalIOError);
+    }
+
+    // -- Every chosen time has what the maps need -----------------------------
+    const volScalarField h0(fieldIO(mesh, first, "h"), mesh);
+    if (!(gMax(h0.primitiveField()) > 0))
+    {
+        FatalErrorInFunction
+            << "No release: h = 0 at the first time, " << first << nl
+            << exit(FatalError);
+    }
+    for (const instant& ti : chosen)
+    {
+        const word missing = missingFields(mesh, ti.name(), hasRho);
+        if (missing.empty())
+        {
+            const volScalarField hMax(fieldIO(mesh, ti.name(), "hMax"), mesh);
+            if (!(gMax(hMax.primitiveField()) > threshold))
+            {
+                FatalErrorInFunction
+                    << "No cell has hMax above the threshold " << threshold
+                    << " m at time " << ti.name() << " (-threshold)." << nl
+                    << "Nothing written." << nl << exit(FatalError);
+            }
+            continue;
+        }
+        FatalErrorInFunction
+            << "No field" << missing << " in " << runTime.path()/ti.name()
+            << " (hMax, UMax and tArrival are written by savageHutterFoam,"
+            << " pMax when constant/transportProperties has rho)" << nl;
+        if (missing.find("pMax") != std::string::npos)
+        {
+            FatalError
+                << "The peak pressure map needs the field pMax or rho [kg/m^3]"
+                << " in " << tp.objectPath() << " (then pMax = rho UMax^2)"
+                << nl;
+        }
+        FatalError << "Nothing written." << nl << exit(FatalError);
+    }
+
     // Mesh cell of each (i, j) of the structured grid
     labelList cellOf(nx*ny, -1);
     const volVectorField& C = mesh.C();
@@ -212,79 +299,6 @@ int main(int argc, char *argv[])
         {
             cellOf[i + nx*j] = c;
         }
-    }
-
-    // -- Fields --------------------------------------------------------------
-    const word now = runTime.timeName();
-    for (const word& name : {"hMax", "UMax", "h"})
-    {
-        if (!hasField(mesh, now, name))
-        {
-            FatalErrorInFunction
-                << "No field " << name << " in " << runTime.path()/now
-                << " (hMax and UMax are written by savageHutterFoam)" << nl
-                << exit(FatalError);
-        }
-    }
-    const volScalarField hMax(fieldIO(mesh, now, "hMax"), mesh);
-    const volScalarField UMax(fieldIO(mesh, now, "UMax"), mesh);
-    const volScalarField h(fieldIO(mesh, now, "h"), mesh);
-    const volScalarField h0(fieldIO(mesh, first, "h"), mesh);
-    const word zbTime = hasField(mesh, now, "zb") ? now : first;
-    const volScalarField zb(fieldIO(mesh, zbTime, "zb"), mesh);
-
-    HashTable<scalarField> maps;
-    maps.insert("hMax", hMax.primitiveField());
-    maps.insert("UMax", UMax.primitiveField());
-    maps.insert("deposit", h.primitiveField());
-    if (hasField(mesh, now, "pMax"))
-    {
-        maps.insert
-        (
-            "pMax",
-            volScalarField(fieldIO(mesh, now, "pMax"), mesh).primitiveField()
-        );
-    }
-    else
-    {
-        const IOdictionary tp
-        (
-            IOobject
-            (
-                "transportProperties", runTime.constant(), runTime,
-                IOobject::MUST_READ, IOobject::NO_WRITE
-            )
-        );
-        if (tp.found("rho"))
-        {
-            const scalar rho = tp.get<scalar>("rho");
-            if (!(rho > 0) || !(rho < 1e30))
-            {
-                FatalIOErrorInFunction(tp)
-                    << "keyword 'rho' = " << rho << ": must be > 0" << nl
-                    << exit(FatalIOError);
-            }
-            Info<< "pMax = rho UMax^2, rho " << rho << " kg/m^3" << nl;
-            maps.insert("pMax", scalarField(rho*sqr(UMax.primitiveField())));
-        }
-        else
-        {
-            Info<< "No pMax field and no rho in transportProperties:"
-                << " no pMax map" << nl;
-        }
-    }
-    if (hasField(mesh, now, "tArrival"))
-    {
-        maps.insert
-        (
-            "tArrival",
-            volScalarField(fieldIO(mesh, now, "tArrival"), mesh)
-                .primitiveField()
-        );
-    }
-    else
-    {
-        Info<< "No tArrival field: no arrival-time map" << nl;
     }
 
     // -- Pixels to cells -----------------------------------------------------
@@ -309,122 +323,161 @@ int main(int argc, char *argv[])
             const label cj = label(std::floor((y - yMin)/cellSize));
             if (ci >= 0 && ci < nx && cj >= 0 && cj < ny)
             {
-                const label c = cellOf[ci + nx*cj];
-                if (c >= 0 && hMax[c] > threshold)
+                pixelCell[i + dem.nx*j] = cellOf[ci + nx*cj];
+            }
+        }
+    }
+
+    for (const instant& ti : chosen)
+    {
+        const word now = ti.name();
+        Info<< "Time " << now << nl;
+
+        // -- Fields ----------------------------------------------------------
+        const volScalarField hMax(fieldIO(mesh, now, "hMax"), mesh);
+        const volScalarField UMax(fieldIO(mesh, now, "UMax"), mesh);
+        const volScalarField h(fieldIO(mesh, now, "h"), mesh);
+        const word zbTime = hasField(mesh, now, "zb") ? now : first;
+        const volScalarField zb(fieldIO(mesh, zbTime, "zb"), mesh);
+
+        HashTable<scalarField> maps;
+        maps.insert("hMax", hMax.primitiveField());
+        maps.insert("UMax", UMax.primitiveField());
+        maps.insert("deposit", h.primitiveField());
+        if (hasField(mesh, now, "pMax"))
+        {
+            maps.insert
+            (
+                "pMax",
+                volScalarField(fieldIO(mesh, now, "pMax"), mesh)
+                    .primitiveField()
+            );
+        }
+        else
+        {
+            Info<< "    No field pMax: pMax = rho UMax^2, rho " << rho
+                << " kg/m^3 (transportProperties)" << nl;
+            maps.insert("pMax", scalarField(rho*sqr(UMax.primitiveField())));
+        }
+        if (hasField(mesh, now, "tArrival"))
+        {
+            maps.insert
+            (
+                "tArrival",
+                volScalarField(fieldIO(mesh, now, "tArrival"), mesh)
+                    .primitiveField()
+            );
+        }
+        else
+        {
+            Info<< "    No field tArrival (a run of an older version): no"
+                << " arrival-time map" << nl;
+        }
+
+        // -- Rasters ---------------------------------------------------------
+        const fileName outDir =
+            runTime.path()/"postProcessing"/"hazardMaps"/now;
+        mkDir(outDir);
+        for (const word& name : maps.sortedToc())
+        {
+            const scalarField& f = maps[name];
+            // -1 in tArrival: never arrived
+            const bool arrival = name == "tArrival";
+            terrain::Raster r;
+            r.nx = dem.nx;
+            r.ny = dem.ny;
+            r.gt = dem.gt;
+            r.wkt = dem.wkt;
+            r.hasNodata = true;
+            r.nodata = -9999;
+            r.z.assign(std::size_t(r.nx)*r.ny, r.nodata);
+            forAll(pixelCell, p)
+            {
+                const label c = pixelCell[p];
+                if (c >= 0 && hMax[c] > threshold && !(arrival && f[c] < 0))
                 {
-                    pixelCell[i + dem.nx*j] = c;
+                    r.z[p] = f[c];
+                }
+            }
+            for (const char* ext : {".asc", ".tif"})
+            {
+                const fileName file = outDir/(name + ext);
+                try
+                {
+                    terrain::writeRaster(file, r);
+                }
+                catch (const terrain::gdalError& e)
+                {
+                    FatalErrorInFunction
+                        << e.what() << nl << exit(FatalError);
+                }
+            }
+            Info<< "    Wrote " << name << " (.asc, .tif): range ["
+                << gMin(f) << ", " << gMax(f) << "]" << nl;
+        }
+
+        // -- Report ----------------------------------------------------------
+        const scalar cellArea = cellSize*cellSize;
+        scalar released = 0, deposit = 0;
+        terrain::vec3 top{0, 0, -GREAT}, com0{0, 0, 0}, com1{0, 0, 0};
+        label runoutCell = -1;
+        forAll(C, c)
+        {
+            const terrain::vec3 W = bedPoint(surface, C[c], zb[c]);
+            released += h0[c]*cellArea;
+            deposit += h[c]*cellArea;
+            for (int k = 0; k < 3; ++k)
+            {
+                com0[k] += h0[c]*W[k];
+                com1[k] += h[c]*W[k];
+            }
+            if (h0[c] > 0 && W[2] > top[2])
+            {
+                top = W;
+            }
+            if (hMax[c] > threshold)
+            {
+                if
+                (
+                    runoutCell < 0
+                 || C[c].x() > C[runoutCell].x() + 0.5*cellSize
+                 || (
+                        C[c].x() > C[runoutCell].x() - 0.5*cellSize
+                     && hMax[c] > hMax[runoutCell]
+                    )
+                )
+                {
+                    runoutCell = c;
                 }
             }
         }
-    }
-
-    const fileName outDir =
-        runTime.path()/"postProcessing"/"hazardMaps"/runTime.timeName();
-    mkDir(outDir);
-    for (const word& name : maps.sortedToc())
-    {
-        const scalarField& f = maps[name];
-        terrain::Raster r;
-        r.nx = dem.nx;
-        r.ny = dem.ny;
-        r.gt = dem.gt;
-        r.wkt = dem.wkt;
-        r.hasNodata = true;
-        r.nodata = -9999;
-        r.z.assign(std::size_t(r.nx)*r.ny, r.nodata);
-        forAll(pixelCell, p)
-        {
-            if (pixelCell[p] >= 0)
-            {
-                r.z[p] = f[pixelCell[p]];
-            }
-        }
-        for (const char* ext : {".asc", ".tif"})
-        {
-            const fileName file = outDir/(name + ext);
-            try
-            {
-                terrain::writeRaster(file, r);
-            }
-            catch (const terrain::gdalError& e)
-            {
-                FatalErrorInFunction
-                    << e.what() << nl << exit(FatalError);
-            }
-        }
-        Info<< "Wrote " << name << " (.asc, .tif): range ["
-            << gMin(f) << ", " << gMax(f) << "]" << nl;
-    }
-
-    // -- Report ---------------------------------------------------------------
-    const scalar cellArea = cellSize*cellSize;
-    scalar released = 0, deposit = 0;
-    terrain::vec3 top{0, 0, -GREAT}, com0{0, 0, 0}, com1{0, 0, 0};
-    label runoutCell = -1;
-    forAll(C, c)
-    {
-        const terrain::vec3 W = bedPoint(surface, C[c], zb[c]);
-        released += h0[c]*cellArea;
-        deposit += h[c]*cellArea;
         for (int k = 0; k < 3; ++k)
         {
-            com0[k] += h0[c]*W[k];
-            com1[k] += h[c]*W[k];
+            com0[k] /= released/cellArea;
+            com1[k] /= deposit > 0 ? deposit/cellArea : 1;
         }
-        if (h0[c] > 0 && W[2] > top[2])
-        {
-            top = W;
-        }
-        if (hMax[c] > threshold)
-        {
-            if
-            (
-                runoutCell < 0
-             || C[c].x() > C[runoutCell].x() + 0.5*cellSize
-             || (
-                    C[c].x() > C[runoutCell].x() - 0.5*cellSize
-                 && hMax[c] > hMax[runoutCell]
-                )
-            )
-            {
-                runoutCell = c;
-            }
-        }
-    }
-    if (!(released > 0) || runoutCell < 0)
-    {
-        FatalErrorInFunction
-            << (released > 0
-                ? "no cell has hMax above the threshold "
-                  + std::to_string(threshold)
-                : "no release: h = 0 at time " + first)
-            << nl << exit(FatalError);
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-        com0[k] /= released/cellArea;
-        com1[k] /= deposit > 0 ? deposit/cellArea : 1;
-    }
-    const terrain::vec3 runout =
-        bedPoint(surface, C[runoutCell], zb[runoutCell]);
+        const terrain::vec3 runout =
+            bedPoint(surface, C[runoutCell], zb[runoutCell]);
 
-    OFstream report(outDir/"report.dat");
-    report.precision(10);
-    report
-        << "# hazardMaps: time " << runTime.timeName() << ", threshold "
-        << threshold << " m on hMax" << nl
-        << "releasedVolume " << released << nl
-        << "depositVolume " << deposit << nl
-        << "runoutX " << runout[0] << nl
-        << "runoutY " << runout[1] << nl
-        << "runoutZ " << runout[2] << nl
-        << "travelAngle " << travelAngle(top, runout) << nl
-        << "comTravelAngle " << travelAngle(com0, com1) << nl;
-    Info<< nl << "Released volume " << released << " m^3, at time "
-        << runTime.timeName() << " " << deposit << " m^3" << nl
-        << "Runout point (" << runout[0] << " " << runout[1] << " "
-        << runout[2] << "), travel angle " << travelAngle(top, runout)
-        << " deg, centre of mass " << travelAngle(com0, com1) << " deg" << nl
-        << "Wrote " << outDir << nl << nl << "End\n" << endl;
+        OFstream report(outDir/"report.dat");
+        report.precision(10);
+        report
+            << "# hazardMaps: time " << now << ", threshold "
+            << threshold << " m on hMax" << nl
+            << "releasedVolume " << released << nl
+            << "depositVolume " << deposit << nl
+            << "runoutX " << runout[0] << nl
+            << "runoutY " << runout[1] << nl
+            << "runoutZ " << runout[2] << nl
+            << "travelAngle " << travelAngle(top, runout) << nl
+            << "comTravelAngle " << travelAngle(com0, com1) << nl;
+        Info<< "    Released volume " << released << " m^3, at time "
+            << now << " " << deposit << " m^3" << nl
+            << "    Runout point (" << runout[0] << " " << runout[1] << " "
+            << runout[2] << "), travel angle " << travelAngle(top, runout)
+            << " deg, centre of mass " << travelAngle(com0, com1) << " deg"
+            << nl << "    Wrote " << outDir << nl << endl;
+    }
+    Info<< "End\n" << endl;
     return 0;
 }
