@@ -12,7 +12,11 @@
     IEEE-rounded +, -, *, /, sqrt and no contraction into FMA on either
     side (cuda/cudaSolverImpl.H), and the only reductions are maxima; so
     every value of h, hu, hv must be bit-identical, and so must the number
-    of steps, the time, the last time step and the diagnostics.
+    of steps, the time, the last time step, the diagnostics and the hazard
+    maps hMax, UMax, pMax (rho = 1500) and tArrival (arrivalThreshold 1 %
+    of the initial peak h; its time is the step's end time, which the GPU
+    keeps on the device: stepKernels.H), counted on host-given steps,
+    device-clock steps and steps ending at an output time.
 
     Float: by default the CUDA backend is IEEE-rounded in float too, and
     the float comparison is bit for bit, as in double.  A build configured
@@ -70,7 +74,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <limits>
 #include <memory>
 
@@ -205,6 +211,7 @@ std::vector<State> compareRun
     }
 
     const Real dtCpu = cpu.stableDt();
+    double fixedEnd = 0;
     const Real dtGpu = gpu->stableDt();
     const double dtRel = std::fabs(double(dtGpu) - double(dtCpu))/double(dtCpu);
     test.check(exact ? dtCpu == dtGpu : dtRel <= 1e-6,
@@ -219,6 +226,7 @@ std::vector<State> compareRun
             cpuUlp->step(Real(0.5)*dtCpu);
         }
     }
+    fixedEnd = cpu.time();
 
     if (exact)
     {
@@ -294,13 +302,36 @@ std::vector<State> compareRun
         prec + ": the flow moves (non-zero momentum at an output time)");
     if (exact)
     {
-        std::vector<Real> hc, sc, hg, sg;
-        cpu.getPeaks(hc, sc);
-        gpu->getPeaks(hg, sg);
-        const double top = hc.empty() ? 0.0
-            : double(*std::max_element(sc.begin(), sc.end()));
-        test.check(!hc.empty() && hc == hg && sc == sg && top > 0, prec
-            + fmt(": peak maps hMax, UMax bit-identical (max UMax %.4g)", top));
+        const PeakMaps<Real> mc = cpu.peakMaps();
+        const PeakMaps<Real> mg = gpu->peakMaps();
+        const double top = mc.speed.empty() ? 0.0
+            : double(*std::max_element(mc.speed.begin(), mc.speed.end()));
+        test.check(!mc.h.empty() && mc.h == mg.h && mc.speed == mg.speed
+            && top > 0, prec + fmt(": peak maps hMax, UMax bit-identical "
+            "(max UMax %.4g)", top));
+        const double pTop = mc.pressure.empty() ? 0.0
+            : double(*std::max_element(mc.pressure.begin(), mc.pressure.end()));
+        test.check(mc.pressure == mg.pressure && pTop > 0, prec
+            + fmt(": pMax bit-identical (max %.4g Pa)", pTop));
+        // Arrivals on host-given steps (before the first output time),
+        // on device-clock steps and on steps ending at an output time
+        long later = 0, onOutput = 0, early = 0;
+        for (const float a : mc.arrival)
+        {
+            later += a > 0;
+            early += a > 0 && a <= float(fixedEnd);
+            for (const double t : times)
+            {
+                onOutput += a == float(t);
+            }
+        }
+        std::vector<std::uint32_t> bc(mc.arrival.size()), bg(mg.arrival.size());
+        std::memcpy(bc.data(), mc.arrival.data(), 4*bc.size());
+        std::memcpy(bg.data(), mg.arrival.data(), 4*bg.size());
+        test.check(bc == bg && later > 0, prec + fmt(": tArrival bit-identical "
+            "(%g cells arrived after t = 0", double(later))
+          + fmt(", %g on the host-given steps", double(early))
+          + fmt(", %g on steps ending at an output time)", double(onOutput)));
         test.check(allSame, prec + ": h, hu, hv bit-identical at every output time");
         test.check(clocksSame, prec + ": steps, time and last dt identical");
         const long long wc = cpu.wetCellUpdates();
@@ -365,9 +396,11 @@ int run
 {
     Counter test;
     State d, f;
-    const std::vector<State> cpuDouble = compareRun(test, makeDouble(double(0)),
+    const std::vector<State> cpuDouble = compareRun(test,
+        shcases::withHazardMaps(makeDouble(double(0))),
         times, wallChunks, fixedSteps, nullptr, d);
-    compareRun(test, makeDouble(float(0)), times, wallChunks, fixedSteps,
+    compareRun(test, shcases::withHazardMaps(makeDouble(float(0))), times,
+        wallChunks, fixedSteps,
         &cpuDouble, f);
     const Difference fd = difference(f, d);
     std::printf("\nfloat on the GPU against double on the GPU, at t = %g: "
