@@ -561,11 +561,13 @@ else
     fail "writeControl timeStep: the run failed (see $d/log.savageHutterFoam)"
 fi
 
-# -- Restart continuity ----------------------------------------------------------
+# -- Restart continuity (hazard maps pMax and tArrival included) ---------------
 full=$(newCase restartFull)
 part=$(newCase restartPart)
 setEntry "$full/system/controlDict" endTime 0.3
 setEntry "$part/system/controlDict" endTime 0.15
+setEntry "$full/constant/transportProperties" rho 1500
+setEntry "$part/constant/transportProperties" rho 1500
 (cd "$full" && savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1)
 (cd "$part" && savageHutterFoam -backend cpu > log.1 2>&1)
 setEntry "$part/system/controlDict" endTime 0.3
@@ -574,7 +576,7 @@ setEntry "$part/system/controlDict" startFrom latestTime
 same=true
 for t in 0.15 0.2 0.25 0.3
 do
-    for f in h U hU regime hMax UMax
+    for f in h U hU regime hMax UMax pMax tArrival
     do
         if ! cmp -s "$full/$t/$f" "$part/$t/$f"
         then
@@ -587,7 +589,7 @@ if $same && grep -q "Reading field hU: the momentum" "$part/log.2" \
 && grep -q "^Time = 0.3 " "$part/log.2" \
 && ! grep -q "^Time = 0.1 " "$part/log.2"
 then
-    pass "restart: 0 -> 0.15, then latestTime -> 0.3, files identical to 0 -> 0.3"
+    pass "restart: 0 -> 0.15, then latestTime -> 0.3, files identical to 0 -> 0.3 (pMax and tArrival included)"
 else
     fail "restart does not continue exactly (see $part)"
 fi
@@ -1224,6 +1226,148 @@ then
     fi
 else
     fail "foamToVTK failed (see $full/log.foamToVTK)"
+fi
+
+# -- Hazard maps pMax and tArrival (issue 14) -----------------------------------
+# In the restart run above (rho 1500, arrivalThreshold 0.01 m): tArrival -1
+# exactly where hMax <= 0.01, set once (the same at every later time), not
+# after its time; pMax = rho UMax^2 to round-off; dimensions Pa and s
+if python3 - "$full" <<'PY'
+import os, re, sys
+case = sys.argv[1]
+def field(t, name):
+    text = open(os.path.join(case, t, name)).read()
+    dims = re.search(r"dimensions\s+(\[[^\]]*\])", text).group(1)
+    m = re.search(r"internalField\s+nonuniform\s+List<scalar>\s*(\d+)\s*\(", text)
+    body = text[m.end():text.index("\n)", m.end())]
+    return dims, [float(x) for x in body.split()]
+times = sorted((d for d in os.listdir(case) if re.fullmatch(r"[0-9.]+", d) and d != "0"), key=float)
+bad, prev, arrived, later = 0, None, 0, 0
+for t in times:
+    _, hMax = field(t, "hMax")
+    _, UMax = field(t, "UMax")
+    dp, pMax = field(t, "pMax")
+    dt, ta = field(t, "tArrival")
+    bad += dp != "[1 -1 -2 0 0 0 0]" or dt != "[0 0 1 0 0 0 0]"
+    for c in range(len(hMax)):
+        bad += (ta[c] >= 0) != (hMax[c] > 0.01) or ta[c] > float(t)
+        bad += abs(pMax[c] - 1500 * UMax[c] ** 2) > 1e-12 * pMax[c]
+        bad += prev is not None and prev[c] >= 0 and ta[c] != prev[c]
+    prev = ta
+arrived = sum(x >= 0 for x in prev)
+later = sum(x > 0 for x in prev)
+print("      %d times, %d cells arrived (%d after t = 0), last arrival %.6g, max pMax %.6g Pa, %d violations"
+      % (len(times), arrived, later, max(prev), max(pMax), bad))
+sys.exit(1 if bad or later == 0 else 0)
+PY
+then
+    pass "hazard maps: tArrival set once, where hMax > arrivalThreshold only; pMax = rho UMax^2; dimensions Pa and s"
+else
+    fail "hazard maps pMax/tArrival inconsistent (see $full)"
+fi
+
+# arrivalThreshold: refused unless positive, finite and at most 1e30
+for v in 0 -0.01 1e31
+do
+    d=$(newCase "arrivalThreshold$v")
+    setEntry "$d/constant/transportProperties" arrivalThreshold "$v"
+    expectFailure "arrivalThreshold$v" arrivalThreshold transportProperties
+done
+
+# A restart with another arrivalThreshold than tArrival was made with is
+# refused, naming tArrival and what to do; without tArrival it runs, the
+# cells already reached taking the start time (with a warning)
+d=$(newCase arrivalRestart)
+cp -r "$part/0.15" "$d/"
+setEntry "$d/constant/transportProperties" arrivalThreshold 0.5
+setEntry "$d/system/controlDict" startFrom latestTime
+setEntry "$d/system/controlDict" endTime 0.2
+(cd "$d" && savageHutterFoam -backend cpu > log.1 2>&1)
+rc1=$?
+written1="$(timeDirs "$d" | tr '\n' ' ')"
+rm "$d/0.15/tArrival"
+(cd "$d" && savageHutterFoam -backend cpu > log.2 2>&1)
+rc2=$?
+if [ $rc1 -ne 0 ] && grep -q "tArrival disagrees with hMax" "$d/log.1" \
+&& grep -q "rm .*0.15/tArrival" "$d/log.1" && [ "$written1" = "0.15 " ] \
+&& [ $rc2 -eq 0 ] && grep -q "No tArrival in 0.15: the .* cells" "$d/log.2" \
+&& grep -q "^0\.15000000" "$d/0.2/tArrival"
+then
+    pass "restart with another arrivalThreshold: refused naming tArrival; without tArrival it runs (reached cells at the start time, warned)"
+else
+    fail "restart with another arrivalThreshold (rc $rc1, then $rc2; time directories after the first: $written1; see $d/log.1, log.2)"
+fi
+
+# hazardMaps at several times (timeSelector), on the terrainChute tutorial
+# shortened (40 m cells, 20 s, a write every 10 s)
+d="$work/hazardMapsTimes"
+rm -rf "$d"
+cp -r "$project/tutorials/terrainChute" "$d"
+rm -f "$d"/log.*
+if (
+    cd "$d" && runApplication ./makeTerrain \
+    && setEntry system/terrainDict cellSize 40 \
+    && runApplication terrainToCase && runApplication blockMesh \
+    && setEntry system/controlDict endTime 20 \
+    && setEntry system/controlDict writeInterval 10 \
+    && runApplication savageHutterFoam -backend cpu
+) > "$d/log.prepare" 2>&1
+then
+    #- maps <args>: the times hazardMaps wrote, after a clean start
+    maps()
+    {
+        rm -rf "$d/postProcessing/hazardMaps"
+        (cd "$d" && hazardMaps "$@" > log.hazardMaps 2>&1) || { echo failed; return; }
+        (cd "$d/postProcessing/hazardMaps" && ls | sort -g | tr '\n' ' ')
+    }
+    problems=""
+    for spec in "-time 10,20|10 20 " "-time 10:20|10 20 " "-time 10|10 " \
+                "-latestTime|20 " "|20 "
+    do
+        got="$(maps ${spec%%|*})"
+        [ "$got" = "${spec#*|}" ] || problems="$problems '${spec%%|*}' gave '$got';"
+    done
+    maps -time 10,20 > /dev/null
+    for t in 10 20
+    do
+        for f in hMax UMax pMax deposit tArrival
+        do
+            for e in asc tif
+            do
+                [ -f "$d/postProcessing/hazardMaps/$t/$f.$e" ] \
+                    || problems="$problems no $t/$f.$e;"
+            done
+        done
+    done
+    # tArrival: nodata where never arrived (no -1), values within [0, t]
+    python3 - "$d" <<'PY' || problems="$problems tArrival raster wrong;"
+import sys
+d = sys.argv[1]
+for t in (10, 20):
+    rows = open(f"{d}/postProcessing/hazardMaps/{t}/tArrival.asc").read().split("\n")[6:]
+    v = [float(x) for r in rows for x in r.split()]
+    flow = [x for x in v if x != -9999]
+    if not flow or min(flow) < 0 or max(flow) > t or max(flow) <= 0:
+        sys.exit(1)
+PY
+    # Without rho and without the field pMax: refused, nothing written
+    rm -rf "$d/postProcessing/hazardMaps"
+    sed -i 's/^rho .*//' "$d/constant/transportProperties"
+    rm "$d/20/pMax"
+    (cd "$d" && hazardMaps -time 10,20 > log.noRho 2>&1) \
+        && problems="$problems no error without rho and pMax;"
+    grep -q "needs the field pMax or rho" "$d/log.noRho" \
+        || problems="$problems no message naming pMax and rho;"
+    [ ! -d "$d/postProcessing/hazardMaps" ] \
+        || problems="$problems wrote maps without rho and pMax;"
+    if [ -z "$problems" ]
+    then
+        pass "hazardMaps: -time 10,20, -time 10:20, -time 10, -latestTime and the default (latest) map the right times into postProcessing/hazardMaps/<time>; tArrival nodata where never reached; no pMax and no rho refused, nothing written"
+    else
+        fail "hazardMaps times:$problems (see $d)"
+    fi
+else
+    fail "hazardMaps times: the shortened terrainChute case failed (see $d/log.prepare)"
 fi
 
 echo
