@@ -19,7 +19,9 @@ Description
                         as .asc and .tif: each DEM pixel takes the value of
                         the mesh cell that holds the foot of its normal on
                         the reference surface; nodata (-9999) outside the
-                        mesh and where hMax <= threshold (outside the flow)
+                        mesh and where hMax <= threshold (outside the flow);
+                        a rotated DEM's as .tif alone (ESRI ASCII grids are
+                        north-up)
         report.dat      lines "key value":
             releasedVolume  sum of h dA at the first time directory [m^3]
             depositVolume   sum of h dA at the chosen time [m^3]
@@ -298,8 +300,8 @@ int main(int argc, char *argv[])
             {
                 continue;
             }
-            const double X = dem.gt[0] + (i + 0.5)*dem.gt[1];
-            const double Y = dem.gt[3] + (j + 0.5)*dem.gt[5];
+            const std::array<double, 2> P = dem.point(i + 0.5, j + 0.5);
+            const double X = P[0], Y = P[1];
             double x = 0, y = 0, z = 0;
             if (!surface.local({X, Y, Z}, x, y, z))
             {
@@ -339,7 +341,8 @@ int main(int argc, char *argv[])
                 r.z[p] = f[pixelCell[p]];
             }
         }
-        for (const char* ext : {".asc", ".tif"})
+        // A rotated DEM's grid as GeoTIFF alone (ESRI ASCII is north-up)
+        for (const std::string& ext : terrain::rasterExtensions(dem))
         {
             const fileName file = outDir/(name + ext);
             try
@@ -352,7 +355,8 @@ int main(int argc, char *argv[])
                     << e.what() << nl << exit(FatalError);
             }
         }
-        Info<< "Wrote " << name << " (.asc, .tif): range ["
+        Info<< "Wrote " << name << " ("
+            << (dem.northUp() ? ".asc, .tif" : ".tif") << "): range ["
             << gMin(f) << ", " << gMax(f) << "]" << nl;
     }
 
