@@ -36,7 +36,10 @@ Description
       -noCpu                GPU only
       -huge K               also the wet mesh K x K x (30 x 14) on the GPU
                             alone (K = 1544: 1.0e9 cells), to t = hugeTime,
-                            with the device memory it takes per cell
+                            with the device memory it takes per cell and
+                            the longest wait between the host's looks at
+                            the run (4 calls of advance() without a wall
+                            budget after the timed run)
       -hugeTime T           end time of the huge run (default 1e-3)
       -profile K            three steps on mesh K, for ncu (no timing)
       -profileCase wet|dry  the case -profile runs (default wet)
@@ -47,6 +50,7 @@ Description
 #include "cuda/cudaSolver.H"
 #include "gpuCases.H"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -76,6 +80,7 @@ struct Options
     bool profileWet = true;
     int huge = 0;
     double hugeTime = 1e-3;
+    bool checkInterval = false;     //!< set for the huge run
     std::string out;
 };
 
@@ -131,6 +136,20 @@ struct MemoryRow
     double total;
 };
 std::vector<MemoryRow> memoryRows;
+
+//- How long the host waits between two looks at the run (a signal, its
+//  wall budget, tEnd): the longest of a few advance() calls with no wall
+//  budget, each of which returns after one launch of steps
+struct CheckRow
+{
+    std::string precision;
+    std::string mesh;
+    long cells;
+    long steps;         //!< steps made by the timed calls
+    double longest;     //!< [s]
+    double stepSeconds; //!< mean wall time of one step in them [s]
+};
+std::vector<CheckRow> checkRows;
 
 template<class Real>
 sh::Problem<Real> wetPlane(int k)
@@ -216,6 +235,25 @@ void runMesh(const Options& o, int k, bool large, bool wet, double tLarge)
         }
         rows.push_back(timeRun(*gpu, tEnd, 1e300, cells));
         gpuSteps = rows.back().steps;
+        if (o.checkInterval)
+        {
+            using clock = std::chrono::steady_clock;
+            const long steps0 = gpu->steps();
+            double longest = 0, all = 0;
+            for (int call = 0; call < 4; ++call)
+            {
+                const clock::time_point t0 = clock::now();
+                gpu->advance(1e300, 0);
+                const std::chrono::duration<double> d = clock::now() - t0;
+                longest = std::max(longest, d.count());
+                all += d.count();
+            }
+            const long made = gpu->steps() - steps0;
+            checkRows.push_back
+            (
+                {prec, mesh, cells, made, longest, made > 0 ? all/made : 0}
+            );
+        }
     }
     else
     {
@@ -343,6 +381,22 @@ std::string table()
             os << buf;
         }
     }
+    if (!checkRows.empty())
+    {
+        os << "\nHow often the host looks at a run on the GPU (a signal, "
+              "the wall budget, tEnd): the longest of 4 advance() calls "
+              "without a wall budget, each one launch of steps:\n\n"
+              "| precision | mesh | cells | steps | longest wait [s] "
+              "| wall per step [s] |\n|---|---|---:|---:|---:|---:|\n";
+        for (const CheckRow& c : checkRows)
+        {
+            std::snprintf(buf, sizeof buf,
+                "| %s | %s | %ld | %ld | %.3f | %.3f |\n",
+                c.precision.c_str(), c.mesh.c_str(), c.cells, c.steps,
+                c.longest, c.stepSeconds);
+            os << buf;
+        }
+    }
     if (!ratios.str().empty())
     {
         os << "\nGPU, float against double:\n\n"
@@ -462,6 +516,7 @@ int main(int argc, char** argv)
         {
             Options gpuOnly = o;
             gpuOnly.cpu = false;
+            gpuOnly.checkInterval = true;
             dbl ? runMesh<double>(gpuOnly, o.huge, true, true, o.hugeTime)
                 : runMesh<float>(gpuOnly, o.huge, true, true, o.hugeTime);
         }

@@ -22,7 +22,28 @@
 #         axis of zero length, mesh wider than the DEM, a nodata hole under
 #         the mesh, a release outside the mesh, unknown keywords and
 #         choices): non-zero exit, FOAM FATAL IO ERROR naming terrainDict and
-#         the keyword, and no file written or changed.
+#         the keyword, and no file written or changed;
+#       - release rasters on a grid of their own (3 m pixels, a thickness
+#         ramp): volume that of the pixels, vertical (sum d A) and normal
+#         (sum d A / cos 35), within one cell area x thickness and, a plane
+#         being mapped exactly, to the log's 8 digits; a uniform raster
+#         wider than the mesh gives h = 1.5 m in every cell (1e-9) and a
+#         warning;
+#       - coordinate reference systems, on the plane moved into UTM zone 32N
+#         (EPSG:32632): the release as a shapefile in EPSG:4326 gives the
+#         0/h of the polygon in the DEM's coordinates (1e-6 m; 4e-10 seen),
+#         without .prj the same with a warning, a .prj on a DEM without one
+#         a warning; a release raster in EPSG:4326 (2e-6 deg pixels) the
+#         analytic volume within one cell area x thickness;
+#       - a DEM on a grid rotated by 30 deg: the plane gives zeta = 35 deg
+#         and zb = 0, the tilted plane its zb (1e-9), 0/h that of the
+#         north-up DEM (1e-9); hazardMaps writes .tif alone, with the DEM's
+#         geotransform, each pixel the hMax of the cell under its centre;
+#       - bad release rasters (not a raster, unknown format, missing,
+#         negative or NaN thickness, none > 0, off the mesh, beside a
+#         polygon or a thickness), a shapefile and a raster in a system no
+#         transformation reaches, a DEM whose pixels have no area: refused
+#         as above.
 #     Prints one line per check and "N passed, M failed".
 #
 # Usage
@@ -206,14 +227,15 @@ else
 fi
 
 # -- 4. Release volumes --------------------------------------------------------
-#- volumeCheck <case> <release> <analytic> <tolerance> <what>
+#- volumeCheck <case> <release> <analytic> <tolerance> <what> [<what the
+#  tolerance is>]
 volumeCheck()
 {
     local v
     v="$(sed -n "s/^Release $2: .* volume \([^ ]*\) m^3/\1/p" "$1/log.terrainToCase")"
     if [ -n "$v" ] && $python -c "import sys; sys.exit(0 if abs($v - $3) <= $4 else 1)"
     then
-        pass "release volume, $5: $v m^3, analytic $3 (tolerance $4, one cell area x thickness)"
+        pass "release volume, $5: $v m^3, analytic $3 (tolerance $4, ${6:-one cell area x thickness})"
     else
         fail "release volume, $5: '${v}' m^3, analytic $3 (tolerance $4)"
     fi
@@ -367,6 +389,317 @@ expectRefusal "zero thickness" "'thickness'" 's#thickness   1;#thickness   0;#'
 expectRefusal "unknown thicknessDirection" "'thicknessDirection'" 's#thicknessDirection vertical#thicknessDirection sideways#'
 expectRefusal "misspelt keyword" "'cellsize'" 's#^cellSize#cellsize#'
 expectRefusal "negative cellSize" "'cellSize'" 's#^cellSize        5#cellSize        -5#'
+
+# -- 7. Release rasters, coordinate reference systems, rotated DEMs -----------
+# This section's inputs: a release raster on a grid of its own (3 m pixels,
+# not aligned with the DEM's 2 m ones), a thickness ramp in a rectangle
+# (rel.asc; its sum of thickness x pixel area in rel.volume), a uniform one
+# over the mesh and beyond (uniform.asc), bad ones; the plane moved into
+# UTM zone 32N (utm.asc, utm.tif in EPSG:32632); the plane and the tilted
+# plane on a grid rotated by 30 deg (rplane.tif, rtilted.tif, through a
+# VRT) and a grid whose pixels have no area (degenerate.tif)
+$python - "$work/base/constant" <<'PYEOF'
+import math, sys
+out = sys.argv[1]
+a = math.tan(math.radians(35)); b = math.tan(math.radians(10))
+def asc(name, nx, ny, d, x0, y0, f):
+    with open(f"{out}/{name}", "w") as o:
+        o.write(f"ncols {nx}\nnrows {ny}\nxllcorner {x0}\nyllcorner {y0}\n"
+                f"cellsize {d}\nNODATA_value -9999\n")
+        for j in range(ny):
+            Y = y0 + (ny - j - 0.5)*d
+            o.write(" ".join(str(f(i, x0 + (i + 0.5)*d, Y)) for i in range(nx))
+                    + "\n")
+def ramp(i, X, Y):
+    if i == 0:
+        return -9999
+    return 0.5 + 0.01*(X - 1040) if 1040 < X < 1100 and 5060 < Y < 5100 else 0
+asc("rel.asc", 40, 30, 3.0, 1031.5, 5041.7, lambda i, X, Y: "%.17g" % ramp(i, X, Y))
+volume = sum(max(ramp(i, 1031.5 + (i + 0.5)*3, 5041.7 + (j + 0.5)*3), 0)*9
+             for i in range(40) for j in range(30))
+open(f"{out}/rel.volume", "w").write("%.17g\n" % volume)
+asc("uniform.asc", 33, 15, 7.0, 1003, 5030, lambda i, X, Y: 1.5)
+asc("negative.asc", 40, 30, 3.0, 1031.5, 5041.7,
+    lambda i, X, Y: -0.1 if (i, round(Y, 6)) == (20, 5085.2) else "%.17g" % ramp(i, X, Y))
+asc("nan.asc", 40, 30, 3.0, 1031.5, 5041.7,
+    lambda i, X, Y: "nan" if (i, round(Y, 6)) == (20, 5085.2) else "%.17g" % ramp(i, X, Y))
+asc("zero.asc", 40, 30, 3.0, 1031.5, 5041.7, lambda i, X, Y: 0)
+asc("far.asc", 5, 5, 2.0, 1210, 5140, lambda i, X, Y: 1)
+asc("utm.asc", 120, 80, 2.0, 600000, 5200000,
+    lambda i, X, Y: "%.17g" % (2000 - a*(X - 600000)))
+# Rotated by 30 deg about the mesh's middle, 130 x 130 pixels of 2 m
+n, d, t = 130, 2.0, math.radians(30)
+gt = [927.0, d*math.cos(t), d*math.sin(t), 5128.0, d*math.sin(t), -d*math.cos(t)]
+for name, f in [("rplane", lambda X, Y: 2000 - a*(X - 1000)),
+                ("rtilted", lambda X, Y: 2000 - a*(X - 1000) + b*(Y - 5080))]:
+    with open(f"{out}/{name}.values.asc", "w") as o:
+        o.write(f"ncols {n}\nnrows {n}\nxllcorner 0\nyllcorner 0\ncellsize 1\n"
+                "NODATA_value -9999\n")
+        for r in range(n):
+            o.write(" ".join("%.17g" % f(gt[0] + (c + 0.5)*gt[1] + (r + 0.5)*gt[2],
+                                         gt[3] + (c + 0.5)*gt[4] + (r + 0.5)*gt[5])
+                             for c in range(n)) + "\n")
+    with open(f"{out}/{name}.vrt", "w") as o:
+        o.write(f'<VRTDataset rasterXSize="{n}" rasterYSize="{n}">\n'
+                f'  <GeoTransform>{", ".join("%.17g" % g for g in gt)}</GeoTransform>\n'
+                '  <VRTRasterBand dataType="Float64" band="1">\n'
+                '    <NoDataValue>-9999</NoDataValue>\n'
+                f'    <SimpleSource><SourceFilename relativeToVRT="1">{name}.values.asc'
+                '</SourceFilename><SourceBand>1</SourceBand></SimpleSource>\n'
+                '  </VRTRasterBand>\n</VRTDataset>\n')
+with open(f"{out}/degenerate.vrt", "w") as o:
+    o.write(open(f"{out}/rplane.vrt").read().replace(
+        ", ".join("%.17g" % g for g in gt), "1000, 2, 0, 5000, 0, 0"))
+PYEOF
+(
+    cd "$work/base/constant" || exit 1
+    t="gdal_translate -q --config AAIGRID_DATATYPE Float64 -ot Float64"
+    $t nan.asc nan.tif && $t -a_srs EPSG:32632 utm.asc utm.tif \
+        && $t rplane.vrt rplane.tif && $t rtilted.vrt rtilted.tif \
+        && $t degenerate.vrt degenerate.tif \
+        && $t -a_srs 'LOCAL_CS["arbitrary",UNIT["metre",1]]' rel.asc local.tif \
+        && echo junk > junk.tif && cp rel.asc rel.xyz
+) || fail "gdal_translate: this section's rasters"
+
+# The quadrilateral r1 in UTM coordinates: a shapefile in EPSG:4326
+# (longitude, latitude), one in the DEM's system without .prj, one in a
+# local engineering system no transformation reaches; rasterised on a
+# longitude-latitude grid of 2e-6 deg (0.15 x 0.22 m) with thickness 2
+(
+    cd "$work/base/constant" || exit 1
+    cat > utm.geojson <<'EOD'
+{"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {},
+ "geometry": {"type": "Polygon", "coordinates": [[[600040, 5200080], [600060, 5200060],
+ [600080, 5200080], [600060, 5200100], [600050, 5200090], [600040, 5200080]]]}}]}
+EOD
+    ogr2ogr -f "ESRI Shapefile" -s_srs EPSG:32632 -t_srs EPSG:4326 lonlat.shp utm.geojson \
+        && ogr2ogr -f "ESRI Shapefile" noprj.shp utm.geojson && rm noprj.prj \
+        && ogr2ogr -f "ESRI Shapefile" -a_srs 'LOCAL_CS["arbitrary",UNIT["metre",1]]' \
+            local.shp utm.geojson \
+        && gdal_rasterize -q -burn 2 -init 0 -ot Float64 -tr 2e-6 2e-6 lonlat.shp lonlat.tif
+) || fail "ogr2ogr, gdal_rasterize: this section's shapefiles"
+
+#- terrainDict on the UTM DEM: writeUtmDict <case> <r1's shape entry>
+#  [<r1's thickness entry>]
+writeUtmDict()
+{
+    cat > "$1/system/terrainDict" <<EOD
+FoamFile { version 2.0; format ascii; class dictionary; object terrainDict; }
+dem             "constant/utm.tif";
+axis            ((600010 5200080) (600200 5200080));
+halfWidth       40;
+cellSize        5;
+profileSmoothing 20;
+release
+{
+    r1
+    {
+        $2
+        ${3-thickness   2;}
+        thicknessDirection normal;
+    }
+}
+EOD
+}
+
+#- r1 of terrainDict replaced: setR1 <case> <entries>
+setR1()
+{
+    sed -i "s#polygon     ((1040 5080) (1060 5060) (1080 5080) (1060 5100) (1050 5090));#$2#; /thickness   2;/d" \
+        "$1/system/terrainDict"
+}
+
+#- compareH <case> <reference case> <tolerance> <what>: 0/h of the two
+compareH()
+{
+    local msg
+    if msg="$($python - "$1" "$2" "$3" <<'PYEOF'
+import re, sys
+def h(case):
+    t = open(f"{case}/0/h").read()
+    m = re.search(r"List<scalar>\s*\d+\s*\(([^)]*)\)", t)
+    return [float(v) for v in m.group(1).split()]
+a, b, tol = h(sys.argv[1]), h(sys.argv[2]), float(sys.argv[3])
+e = max(abs(u - v) for u, v in zip(a, b)) if len(a) == len(b) else float("inf")
+print("max |h - h_ref| = %.3g m over %d cells (tolerance %g m)" % (e, len(a), tol))
+sys.exit(0 if e <= tol else 1)
+PYEOF
+)"
+    then
+        pass "$4: $msg"
+    else
+        fail "$4: $msg"
+    fi
+}
+
+#- runCase <name> <terrainDict edit: a command run in the case>: a copy of
+#  base, edited, through terrainToCase; prints the case directory
+runCase()
+{
+    local c
+    c="$(newCase "$1")"
+    (cd "$c" && eval "$2" && runApplication terrainToCase > /dev/null) \
+        || { fail "$1: terrainToCase failed (see $c/log.terrainToCase)"; }
+    echo "$c"
+}
+
+# Release rasters: the ramp on its own grid, vertical and normal; the
+# uniform raster, wider than the mesh
+relVolume="$(cat "$work/base/constant/rel.volume")"
+cellArea=25
+c="$(runCase raster-vertical "setR1 . 'raster \"constant/rel.asc\";'; sed -i 's/thicknessDirection normal/thicknessDirection vertical/' system/terrainDict")"
+volumeCheck "$c" r1 "$relVolume" "$cellArea*1.1" "release raster (3 m pixels, ramp 0.5 to 1.1 m), vertical"
+volumeCheck "$c" r1 "$relVolume" "1e-7*$relVolume" "release raster, vertical, exact on a plane DEM" "the log's 8 digits"
+c="$(runCase raster-normal "setR1 . 'raster \"constant/rel.asc\";'")"
+volumeCheck "$c" r1 "$relVolume/$cos35" "$cellArea*1.1" "release raster, normal (sum d A / cos 35)"
+volumeCheck "$c" r1 "$relVolume/$cos35" "1e-7*$relVolume/$cos35" "release raster, normal, exact on a plane DEM" "the log's 8 digits"
+c="$(runCase raster-uniform "setR1 . 'raster \"constant/uniform.asc\";'; sed -i '/^    r2/,/^    }/d' system/terrainDict")"
+if msg="$(fieldCheck "$c" '(lambda h: (max(abs(v - 1.5) for v in h) < 1e-9, "h in [%.15g, %.15g] m over %d cells" % (min(h), max(h), len(h))))(field("h"))')"
+then
+    pass "uniform release raster of 1.5 m (7 m pixels) over the whole mesh and beyond: $msg"
+else
+    fail "uniform release raster of 1.5 m over the whole mesh: $msg"
+fi
+if grep -q "reach outside the mesh" "$c/log.terrainToCase"
+then
+    pass "uniform release raster beyond the mesh: warned ($(grep -o '[0-9]* of the [0-9]* pixels.*' "$c/log.terrainToCase" | head -n1 | cut -c1-80)...)"
+else
+    fail "uniform release raster beyond the mesh: no warning"
+fi
+
+# Coordinate reference systems: r1 in the UTM DEM's coordinates in the
+# dictionary, as a shapefile in longitude-latitude, without .prj, and as a
+# longitude-latitude raster
+ref="$(newCase utm-dictionary)"
+writeUtmDict "$ref" "polygon ((600040 5200080) (600060 5200060) (600080 5200080) (600060 5200100) (600050 5200090));"
+sed -i '/^    r2/,/^    }/d' "$ref/system/terrainDict"
+(cd "$ref" && runApplication terrainToCase > /dev/null) || fail "UTM DEM: terrainToCase failed"
+volumeCheck "$ref" r1 "2*800/$cos35" 50 "UTM DEM (EPSG:32632), polygon in the dictionary"
+c="$(newCase utm-lonlat)"
+writeUtmDict "$c" 'file "constant/lonlat.shp";'
+if (cd "$c" && runApplication terrainToCase > /dev/null)
+then
+    if grep -q "transformed from 'WGS 84' (EPSG:4326) to 'WGS 84 / UTM zone 32N' (EPSG:32632)" "$c/log.terrainToCase"
+    then
+        compareH "$c" "$ref" 1e-6 "shapefile in EPSG:4326 on a DEM in EPSG:32632: transformed, 0/h that of the polygon in the DEM's coordinates"
+    else
+        fail "shapefile in EPSG:4326 on a DEM in EPSG:32632: no transformation announced"
+    fi
+else
+    fail "shapefile in EPSG:4326 on a DEM in EPSG:32632: terrainToCase failed"
+fi
+c="$(newCase utm-noprj)"
+writeUtmDict "$c" 'file "constant/noprj.shp";'
+if (cd "$c" && runApplication terrainToCase > /dev/null) \
+    && grep -q "noprj.shp gives no coordinate reference system, the DEM is in 'WGS 84 / UTM zone 32N'" "$c/log.terrainToCase"
+then
+    compareH "$c" "$ref" 1e-12 "shapefile without .prj on a DEM in EPSG:32632: warned, taken in the DEM's coordinates"
+else
+    fail "shapefile without .prj on a DEM in EPSG:32632: terrainToCase failed or no warning"
+fi
+if grep -q "release.shp is in 'WGS 84' (EPSG:4326), the DEM gives no coordinate reference system" "$work/shapefile/log.terrainToCase"
+then
+    pass "shapefile with a .prj on a DEM without one: warned, taken in the DEM's coordinates (0/h as checked in section 4)"
+else
+    fail "shapefile with a .prj on a DEM without one: no warning"
+fi
+c="$(newCase utm-lonlat-raster)"
+writeUtmDict "$c" 'raster "constant/lonlat.tif";' ""
+if (cd "$c" && runApplication terrainToCase > /dev/null)
+then
+    volumeCheck "$c" r1 "2*800/$cos35" 50 "release raster in EPSG:4326 (2e-6 deg pixels, thickness 2 m normal) on a DEM in EPSG:32632"
+else
+    fail "release raster in EPSG:4326 on a DEM in EPSG:32632: terrainToCase failed"
+fi
+
+# Rotated DEMs: the plane and the tilted plane on a grid rotated by 30 deg
+c="$(runCase rotated "sed -i 's#constant/plane.asc#constant/rplane.tif#' system/terrainDict")"
+if msg="$(fieldCheck "$c" '(max(abs(z - 35) for z in zeta) < 1e-9 and max(map(abs, zb)) < 1e-9, "max |zeta - 35| = %.3g deg, max |zb| = %.3g m" % (max(abs(z - 35) for z in zeta), max(map(abs, zb))))')"
+then
+    pass "plane DEM on a grid rotated by 30 deg: $msg"
+else
+    fail "plane DEM on a grid rotated by 30 deg: $msg"
+fi
+compareH "$c" "$work/plane" 1e-9 "plane DEM on a rotated grid: 0/h that of the north-up DEM"
+c="$(runCase rotated-tilted "sed -i 's#constant/plane.asc#constant/rtilted.tif#' system/terrainDict")"
+if msg="$(fieldCheck "$c" '(lambda e: (e < 1e-9, "max |zb - y tan10 cos35| = %.3g m" % e))(max(abs(zb[k] - y[k]*math.tan(math.radians(10))*math.cos(math.radians(35))) for k in range(len(zb))))')"
+then
+    pass "sideways-tilted plane on a grid rotated by 30 deg: $msg"
+else
+    fail "sideways-tilted plane on a grid rotated by 30 deg: $msg"
+fi
+
+# hazardMaps on the rotated plane: GeoTIFF alone, with the DEM's
+# geotransform; each pixel the hMax of the cell under its centre
+c="$work/rotated"
+sed -i 's/^rho .*//' "$c/constant/transportProperties"
+sed -i 's/^phi /rho             1500;\nphi /' "$c/constant/transportProperties"
+if (
+    cd "$c" && runApplication blockMesh && runApplication savageHutterFoam \
+        && runApplication hazardMaps -threshold 0.01 \
+        && gdal_translate -q -of AAIGrid postProcessing/hazardMaps/1/hMax.tif hMax.values.asc
+) > /dev/null
+then
+    if msg="$($python - "$c" 2>&1 <<'PYEOF'
+import json, math, os, re, subprocess, sys
+case = sys.argv[1]
+out = f"{case}/postProcessing/hazardMaps/1"
+info = lambda f: json.loads(subprocess.run(["gdalinfo", "-json", f], capture_output=True, text=True).stdout)
+gt = info(f"{out}/hMax.tif")["geoTransform"]
+gtDem = info(f"{case}/constant/rplane.tif")["geoTransform"]
+asc = [f for f in os.listdir(out) if f.endswith(".asc")]
+rows = open(f"{case}/hMax.values.asc").read().split("\n")[6:]
+v = [[float(s) for s in r.split()] for r in rows if r.strip()]
+t = open(f"{case}/1/hMax").read()
+hMax = [float(s) for s in re.search(r"List<scalar>\s*\d+\s*\(([^)]*)\)", t).group(1).split()]
+bm = open(f"{case}/system/blockMeshDict").read()
+nx = int(re.search(r"^nx\s+(\d+);", bm, re.M).group(1))
+ny = int(re.search(r"^ny\s+(\d+);", bm, re.M).group(1))
+cs, yMax, c35 = 5.0, 2.5*ny, math.cos(math.radians(35))
+n = bad = 0
+for r, row in enumerate(v):
+    for c, val in enumerate(row):
+        X = gt[0] + (c + 0.5)*gt[1] + (r + 0.5)*gt[2]
+        Y = gt[3] + (c + 0.5)*gt[4] + (r + 0.5)*gt[5]
+        fx, fy = (X - 1010)/c35/cs, (Y - 5080 + yMax)/cs
+        if not (0 < fx < nx and 0 < fy < ny) or min(fx % 1, 1 - fx % 1, fy % 1, 1 - fy % 1) < 1e-6:
+            continue
+        h = hMax[int(fx) + nx*int(fy)]
+        want = h if h > 0.01 else -9999
+        n += 1
+        bad += abs(val - want) > 1e-6*max(1, abs(want))
+good = gt == gtDem and not asc and n > 1000 and bad == 0
+print(f"geotransform {gt} (DEM {gtDem}), .asc written: {asc or 'none'}, "
+      f"{n} pixels over the mesh, {bad} not the hMax of the cell under their centre")
+sys.exit(0 if good else 1)
+PYEOF
+)"
+    then
+        pass "hazardMaps on a rotated DEM: hMax.tif $msg"
+    else
+        fail "hazardMaps on a rotated DEM: $msg"
+    fi
+else
+    fail "hazardMaps on a rotated DEM: blockMesh, savageHutterFoam, hazardMaps or gdal_translate failed"
+fi
+
+# Bad release rasters and coordinate systems, a degenerate DEM
+r1='polygon     ((1040 5080) (1060 5060) (1080 5080) (1060 5100) (1050 5090));'
+r1raster() { echo "s#$r1#raster \"constant/$1\";#; /thickness   2;/d"; }
+expectRefusal "release raster not a raster" "'raster'" "$(r1raster junk.tif)"
+expectRefusal "release raster of unknown format" "'raster'" "$(r1raster rel.xyz)"
+expectRefusal "missing release raster" "'raster'" "$(r1raster none.tif)"
+expectRefusal "negative release thickness" "'raster'" "$(r1raster negative.asc)"
+expectRefusal "NaN release thickness" "'raster'" "$(r1raster nan.tif)"
+expectRefusal "release raster without thickness" "'raster'" "$(r1raster zero.asc)"
+expectRefusal "release raster off the mesh" "'raster'" "$(r1raster far.asc)"
+expectRefusal "polygon and raster in one release" "'raster'" "s#$r1#$r1 raster \"constant/rel.asc\";#; /thickness   2;/d"
+expectRefusal "thickness beside a release raster" "'thickness'" "s#$r1#raster \"constant/rel.asc\";#"
+expectRefusal "shapefile no transformation reaches" "local.shp" - \
+    "cp ../utm-dictionary/system/terrainDict system/ && sed -i 's#polygon ((600040.*#file \"constant/local.shp\";#' system/terrainDict"
+expectRefusal "release raster no transformation reaches" "local.tif" - \
+    "cp ../utm-dictionary/system/terrainDict system/ && sed -i 's#polygon ((600040.*#raster \"constant/local.tif\";#; /thickness   2;/d' system/terrainDict"
+expectRefusal "DEM of pixels without area" "'dem'" 's#constant/plane.asc#constant/degenerate.tif#'
 
 echo
 echo "$passed passed, $failed failed"

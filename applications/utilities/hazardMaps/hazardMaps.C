@@ -23,7 +23,9 @@ Description
                         the reference surface; nodata (-9999) outside the
                         mesh and where hMax <= threshold (outside the
                         flow), and in tArrival where the material never
-                        arrived (-1: h never exceeded arrivalThreshold)
+                        arrived (-1: h never exceeded arrivalThreshold);
+                        a rotated DEM's as .tif alone (ESRI ASCII grids are
+                        north-up)
         report.dat      lines "key value":
             releasedVolume  sum of h dA at the first time directory [m^3]
             depositVolume   sum of h dA at that time [m^3]
@@ -312,8 +314,8 @@ int main(int argc, char *argv[])
             {
                 continue;
             }
-            const double X = dem.gt[0] + (i + 0.5)*dem.gt[1];
-            const double Y = dem.gt[3] + (j + 0.5)*dem.gt[5];
+            const std::array<double, 2> P = dem.point(i + 0.5, j + 0.5);
+            const double X = P[0], Y = P[1];
             double x = 0, y = 0, z = 0;
             if (!surface.local({X, Y, Z}, x, y, z))
             {
@@ -399,7 +401,9 @@ int main(int argc, char *argv[])
                     r.z[p] = f[c];
                 }
             }
-            for (const char* ext : {".asc", ".tif"})
+            // A rotated DEM's grid as GeoTIFF alone (ESRI ASCII is
+            // north-up)
+            for (const std::string& ext : terrain::rasterExtensions(dem))
             {
                 const fileName file = outDir/(name + ext);
                 try
@@ -412,7 +416,8 @@ int main(int argc, char *argv[])
                         << e.what() << nl << exit(FatalError);
                 }
             }
-            Info<< "    Wrote " << name << " (.asc, .tif): range ["
+            Info<< "    Wrote " << name << " ("
+                << (dem.northUp() ? ".asc, .tif" : ".tif") << "): range ["
                 << gMin(f) << ", " << gMax(f) << "]" << nl;
         }
 

@@ -14,6 +14,7 @@ Description
 
 #include <gdal_priv.h>
 #include <ogrsf_frmts.h>
+#include <ogr_spatialref.h>
 #include <cpl_conv.h>
 
 namespace terrain
@@ -62,6 +63,69 @@ std::string extension(const std::string& path)
     return e;
 }
 
+//- A spatial reference from WKT, traditional GIS axis order; null for ""
+std::unique_ptr<OGRSpatialReference> spatialReference
+(
+    const std::string& wkt, const std::string& file
+)
+{
+    if (wkt.empty())
+    {
+        return nullptr;
+    }
+    std::unique_ptr<OGRSpatialReference> s(new OGRSpatialReference);
+    if (s->importFromWkt(wkt.c_str()) != OGRERR_NONE)
+    {
+        throw gdalError
+        (
+            file + ": cannot read its coordinate reference system" + lastError()
+        );
+    }
+    s->SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+    return s;
+}
+
+std::string crsName(const OGRSpatialReference& s)
+{
+    const char* name = s.GetName();
+    const char* auth = s.GetAuthorityName(nullptr);
+    const char* code = s.GetAuthorityCode(nullptr);
+    std::string n = name ? std::string("'") + name + "'" : "(unnamed)";
+    if (auth && code)
+    {
+        n += std::string(" (") + auth + ":" + code + ")";
+    }
+    return n;
+}
+
+bool sameCrs
+(
+    const std::string& a, const std::string& b, const std::string& file
+)
+{
+    if (a.empty() || b.empty())
+    {
+        return a.empty() == b.empty();
+    }
+    const auto sa = spatialReference(a, file);
+    const auto sb = spatialReference(b, file);
+    return sa->IsSame(sb.get());
+}
+
+std::string layerWkt(OGRLayer* layer)
+{
+    const OGRSpatialReference* s = layer->GetSpatialRef();
+    if (!s)
+    {
+        return "";
+    }
+    char* w = nullptr;
+    s->exportToWkt(&w);
+    const std::string wkt = w ? w : "";
+    CPLFree(w);
+    return wkt;
+}
+
 struct closeDataset
 {
     void operator()(GDALDataset* d) const { GDALClose(d); }
@@ -71,12 +135,63 @@ using datasetPtr = std::unique_ptr<GDALDataset, closeDataset>;
 } // namespace
 
 
+void Raster::pixel(double X, double Y, double& c, double& r) const
+{
+    const double dX = X - gt[0];
+    const double dY = Y - gt[3];
+    if (northUp())
+    {
+        c = dX/gt[1];
+        r = dY/gt[5];
+        return;
+    }
+    const double det = gt[1]*gt[5] - gt[2]*gt[4];
+    c = (gt[5]*dX - gt[2]*dY)/det;
+    r = (gt[1]*dY - gt[4]*dX)/det;
+}
+
+
+bool Raster::covers(double X, double Y) const
+{
+    double c = 0, r = 0;
+    pixel(X, Y, c, r);
+    return c >= 0 && r >= 0 && c <= nx && r <= ny;
+}
+
+
+double Raster::pixelSize() const
+{
+    return std::min(std::hypot(gt[1], gt[4]), std::hypot(gt[2], gt[5]));
+}
+
+
+std::array<double, 4> Raster::bounds() const
+{
+    std::array<double, 4> b
+    {
+        std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(),
+        std::numeric_limits<double>::max(), -std::numeric_limits<double>::max()
+    };
+    for (int k = 0; k < 4; ++k)
+    {
+        const std::array<double, 2> P = point(k % 2 ? nx : 0, k/2 ? ny : 0);
+        b[0] = std::min(b[0], P[0]);
+        b[1] = std::max(b[1], P[0]);
+        b[2] = std::min(b[2], P[1]);
+        b[3] = std::max(b[3], P[1]);
+    }
+    return b;
+}
+
+
 double Raster::value(double X, double Y) const
 {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     // Fractional pixel-centre coordinates
-    const double fi = (X - gt[0])/gt[1] - 0.5;
-    const double fj = (Y - gt[3])/gt[5] - 0.5;
+    double fi = 0, fj = 0;
+    pixel(X, Y, fi, fj);
+    fi -= 0.5;
+    fj -= 0.5;
     if (!(fi >= 0 && fj >= 0 && fi <= nx - 1 && fj <= ny - 1))
     {
         return nan;
@@ -148,12 +263,16 @@ Raster readRaster(const std::string& path)
     {
         throw gdalError(path + ": no georeference (geotransform)");
     }
-    if (r.gt[2] != 0 || r.gt[4] != 0 || !(r.gt[1] > 0) || r.gt[5] == 0)
+    const double det = r.gt[1]*r.gt[5] - r.gt[2]*r.gt[4];
+    if (!std::isfinite(det) || det == 0 || !std::isfinite(r.gt[0] + r.gt[3]))
     {
         throw gdalError
         (
-            path + ": rotated or sheared grid (geotransform terms 2 and 4"
-            " non-zero): only north-up grids are supported"
+            path + ": degenerate georeference (geotransform "
+          + std::to_string(r.gt[0]) + " " + std::to_string(r.gt[1]) + " "
+          + std::to_string(r.gt[2]) + " " + std::to_string(r.gt[3]) + " "
+          + std::to_string(r.gt[4]) + " " + std::to_string(r.gt[5])
+          + "): its pixels have no area"
         );
     }
     if (const char* w = ds->GetProjectionRef())
@@ -184,10 +303,28 @@ Raster readRaster(const std::string& path)
 }
 
 
+std::vector<std::string> rasterExtensions(const Raster& r)
+{
+    if (r.northUp())
+    {
+        return {".asc", ".tif"};
+    }
+    return {".tif"};
+}
+
+
 void writeRaster(const std::string& path, const Raster& r)
 {
     init();
     const std::string driverName = rasterDriver(path);
+    if (driverName == "AAIGrid" && !r.northUp())
+    {
+        throw gdalError
+        (
+            "cannot write " + path + ": an ESRI ASCII grid holds north-up"
+            " grids only, and this one is rotated (write it as .tif)"
+        );
+    }
     GDALDriver* mem = GetGDALDriverManager()->GetDriverByName("MEM");
     GDALDriver* out = GetGDALDriverManager()->GetDriverByName
     (
@@ -232,7 +369,10 @@ void writeRaster(const std::string& path, const Raster& r)
 }
 
 
-std::vector<Polygon> readPolygons(const std::string& path)
+std::vector<Polygon> readPolygons
+(
+    const std::string& path, std::string& wkt
+)
 {
     init();
     CPLErrorReset();
@@ -280,8 +420,24 @@ std::vector<Polygon> readPolygons(const std::string& path)
             polygons.push_back(poly);
         }
     };
+    wkt.clear();
+    bool first = true;
     for (OGRLayer* layer : ds->GetLayers())
     {
+        const std::string w = layerWkt(layer);
+        if (first)
+        {
+            wkt = w;
+            first = false;
+        }
+        else if (!sameCrs(w, wkt, path))
+        {
+            throw gdalError
+            (
+                path + ": its layers are in different coordinate reference"
+                " systems (layer " + layer->GetName() + ")"
+            );
+        }
         layer->ResetReading();
         while (OGRFeature* f = layer->GetNextFeature())
         {
@@ -309,6 +465,87 @@ std::vector<Polygon> readPolygons(const std::string& path)
         throw gdalError(path + " holds no polygon");
     }
     return polygons;
+}
+
+void crsTransform::deleter::operator()(OGRCoordinateTransformation* t) const
+{
+    OGRCoordinateTransformation::DestroyCT(t);
+}
+
+
+crsTransform::crsTransform
+(
+    const std::string& fromWkt, const std::string& toWkt,
+    const std::string& file
+)
+:
+    file_(file)
+{
+    init();
+    CPLErrorReset();
+    const auto from = spatialReference(fromWkt, file);
+    const auto to = spatialReference(toWkt, file + " (the DEM's system)");
+    if (!from && !to)
+    {
+        return;
+    }
+    if (!from || !to)
+    {
+        warning_ =
+            from
+          ? file + " is in " + crsName(*from) + ", the DEM gives no"
+            " coordinate reference system: its coordinates are taken as"
+            " the DEM's"
+          : file + " gives no coordinate reference system, the DEM is in "
+          + crsName(*to) + ": its coordinates are taken as the DEM's";
+        return;
+    }
+    if (from->IsSame(to.get()))
+    {
+        return;
+    }
+    t_.reset(OGRCreateCoordinateTransformation(from.get(), to.get()));
+    if (!t_)
+    {
+        throw gdalError
+        (
+            file + ": no transformation from its coordinate reference system "
+          + crsName(*from) + " to the DEM's " + crsName(*to) + lastError()
+        );
+    }
+    description_ = "from " + crsName(*from) + " to " + crsName(*to);
+}
+
+
+void crsTransform::apply(std::vector<std::array<double, 2>>& pts) const
+{
+    if (!t_ || pts.empty())
+    {
+        return;
+    }
+    const std::size_t n = pts.size();
+    std::vector<double> X(n), Y(n);
+    std::vector<int> ok(n, 0);
+    for (std::size_t k = 0; k < n; ++k)
+    {
+        X[k] = pts[k][0];
+        Y[k] = pts[k][1];
+    }
+    CPLErrorReset();
+    t_->Transform(int(n), X.data(), Y.data(), nullptr, ok.data());
+    for (std::size_t k = 0; k < n; ++k)
+    {
+        if (!ok[k] || !std::isfinite(X[k]) || !std::isfinite(Y[k]))
+        {
+            throw gdalError
+            (
+                file_ + ": cannot transform the point ("
+              + std::to_string(pts[k][0]) + ", " + std::to_string(pts[k][1])
+              + ") " + description_ + lastError()
+            );
+        }
+        pts[k] = {X[k], Y[k]};
+    }
 }
 
 } // namespace terrain

@@ -22,7 +22,21 @@ Description
                 thickness   1.0;                  // [m]
                 thicknessDirection normal;        // normal | vertical
             }
+            release2
+            {
+                raster      "constant/release.tif";  // thickness [m] per pixel
+                thicknessDirection vertical;     // (no 'thickness' keyword)
+            }
         }
+
+    The DEM's grid may be north-up or rotated (any affine geotransform).
+    Polygon vertices in the dictionary are in the DEM's coordinates; a
+    shapefile's (its .prj) and a release raster's coordinate reference
+    system, when both it and the DEM's are given and differ, is transformed
+    to the DEM's (OGR, traditional GIS axis order: a vertex at a time, so
+    a polygon's edges are straight in the DEM's plan); when only one of
+    the two is given, a warning, and the coordinates are taken as the
+    DEM's.
 
     The reference profile is the DEM's elevation along the axis (the
     thalweg), its slope fitted by a local linear regression over
@@ -43,9 +57,13 @@ Description
                                      surface along its normal
         0/h                          the releases' thickness normal to the
                                      reference surface, each cell by the
-                                     area of it the polygons cover;
-                                     vertical thickness d becomes d cos(theta),
-                                     theta the DEM's slope there
+                                     area of it the polygons cover, or the
+                                     area-weighted mean of the release
+                                     raster's pixels over it
+                                     (rasterRelease.H: conservative, exact
+                                     on a plane DEM); vertical thickness d
+                                     becomes d cos(theta), theta the DEM's
+                                     slope there
         0/U                          zero
         constant/terrainMapping      what maps (x, y, z) back to the DEM's
                                      world coordinates (hazardMaps reads it)
@@ -54,8 +72,12 @@ Description
     bed is the reference surface; a steep zb strains it).  Every input is
     checked before anything is written: a missing DEM, an unknown raster
     format, an axis of zero length or leaving the DEM, a mesh over nodata,
-    a release outside the mesh stop it with FOAM FATAL IO ERROR naming the
-    file and the keyword, and nothing is written.
+    a release outside the mesh, a release raster that cannot be read, with
+    a negative, NaN or infinite thickness, without a thickness > 0 or
+    without overlap with the mesh, a coordinate transformation that cannot
+    be built stop it with FOAM FATAL IO ERROR naming the file and the
+    keyword, and nothing is written.  A release raster reaching beyond the
+    mesh is a warning with the volume left out.
 
 Usage
     terrainToCase [-dict file]
@@ -70,6 +92,7 @@ Usage
 #include "gdalIO.H"
 #include "referenceSurface.H"
 #include "polygonClip.H"
+#include "rasterRelease.H"
 #include "terrainFiles.H"
 
 #include <fstream>
@@ -88,7 +111,7 @@ const wordList terrainKeywords
 
 const wordList releaseKeywords
 ({
-    "polygon", "file", "thickness", "thicknessDirection"
+    "polygon", "file", "raster", "thickness", "thicknessDirection"
 });
 
 void checkKeywords
@@ -191,12 +214,79 @@ void fitProfile
 struct release
 {
     word name;
-    std::vector<terrain::Polygon> polygons;   // world (X, Y)
-    scalar thickness;
-    bool vertical;
-    const dictionary* dict;
-    word shapeKey;
+    std::vector<terrain::Polygon> polygons;   // world (X, Y) of the DEM
+    terrain::Raster raster;                   // or a thickness raster
+    fileName rasterFile;
+    std::unique_ptr<terrain::crsTransform> rasterToDem;
+    scalar thickness = 0;
+    bool vertical = false;
+    const dictionary* dict = nullptr;
+    word shapeKey;                            // polygon, file or raster
 };
+
+//- A crsTransform from a file's system to the DEM's, its warning and
+//  what it does announced; FatalIOError naming the keyword when none
+std::unique_ptr<terrain::crsTransform> toDemSystem
+(
+    const std::string& wkt, const std::string& demWkt, const fileName& file,
+    const dictionary& d, const word& key, const word& releaseName
+)
+{
+    std::unique_ptr<terrain::crsTransform> t;
+    try
+    {
+        t.reset(new terrain::crsTransform(wkt, demWkt, file));
+    }
+    catch (const terrain::gdalError& err)
+    {
+        FatalIOErrorInFunction(d)
+            << "keyword '" << key << "' of release " << releaseName << ": "
+            << err.what() << nl << exit(FatalIOError);
+    }
+    if (!t->warning().empty())
+    {
+        WarningInFunction
+            << "release " << releaseName << ": " << t->warning().c_str()
+            << nl << endl;
+    }
+    if (!t->identity())
+    {
+        Info<< "    release " << releaseName << ": " << file
+            << " transformed " << t->description().c_str() << nl;
+    }
+    return t;
+}
+
+//- The release raster's values as thickness: finite and >= 0 where not
+//  nodata (nodata and 0: no release)
+void checkThicknessRaster
+(
+    const terrain::Raster& r, const fileName& file, const dictionary& d,
+    const word& releaseName
+)
+{
+    const bool nanIsNodata = r.hasNodata && std::isnan(r.nodata);
+    for (int j = 0; j < r.ny; ++j)
+    {
+        for (int i = 0; i < r.nx; ++i)
+        {
+            const double v = r.at(i, j);
+            const bool bad =
+                std::isnan(v) ? !nanIsNodata
+              : r.valid(v) && (v < 0 || !(v < 1e30));
+            if (bad)
+            {
+                const std::array<double, 2> P = r.point(i + 0.5, j + 0.5);
+                FatalIOErrorInFunction(d)
+                    << "keyword 'raster' of release " << releaseName << ": "
+                    << file << " holds the thickness " << v << " at pixel ("
+                    << i << ", " << j << ") (X = " << P[0] << ", Y = " << P[1]
+                    << "): thickness must be finite and >= 0 (nodata and 0:"
+                    << " no release)" << nl << exit(FatalIOError);
+            }
+        }
+    }
+}
 
 } // namespace
 
@@ -246,13 +336,15 @@ int main(int argc, char *argv[])
         FatalIOErrorInFunction(dict)
             << "keyword 'dem': " << e.what() << nl << exit(FatalIOError);
     }
-    const double pixel = std::min(dem.gt[1], std::fabs(dem.gt[5]));
-    const double demX0 = dem.gt[0], demX1 = dem.gt[0] + dem.nx*dem.gt[1];
-    const double demY0 = std::min(dem.gt[3], dem.gt[3] + dem.ny*dem.gt[5]);
-    const double demY1 = std::max(dem.gt[3], dem.gt[3] + dem.ny*dem.gt[5]);
+    const double pixel = dem.pixelSize();
+    const std::array<double, 4> demBox = dem.bounds();
+    const double demX0 = demBox[0], demX1 = demBox[1];
+    const double demY0 = demBox[2], demY1 = demBox[3];
     Info<< "DEM " << demFile << ": " << dem.nx << " x " << dem.ny
-        << " pixels of " << dem.gt[1] << " x " << std::fabs(dem.gt[5])
-        << " m, X in [" << demX0 << ", " << demX1 << "], Y in ["
+        << " pixels of " << std::hypot(dem.gt[1], dem.gt[4]) << " x "
+        << std::hypot(dem.gt[2], dem.gt[5]) << " m, "
+        << (dem.northUp() ? "" : "rotated grid, bounding box ")
+        << "X in [" << demX0 << ", " << demX1 << "], Y in ["
         << demY0 << ", " << demY1 << "]" << nl;
     const auto elevation = [&dem](double X, double Y)
     {
@@ -297,6 +389,7 @@ int main(int argc, char *argv[])
                 << axis[1] << " leaves the DEM"
                 << " or crosses nodata at " << P << " (distance " << k*dS
                 << " m from its first point); the DEM " << demFile
+                << (dem.northUp() ? "" : " (rotated; its bounding box)")
                 << " covers X in [" << demX0 << ", " << demX1
                 << "], Y in [" << demY0 << ", " << demY1 << "]" << nl
                 << exit(FatalIOError);
@@ -358,9 +451,7 @@ int main(int argc, char *argv[])
             if (!std::isfinite(z))
             {
                 const terrain::vec3 W = surface.world(x, y, 0);
-                const bool inside =
-                    W[0] > demX0 && W[0] < demX1 && W[1] > demY0
-                 && W[1] < demY1;
+                const bool inside = dem.covers(W[0], W[1]);
                 FatalIOErrorInFunction(dict)
                     << "keyword '" << (inside ? "dem" : "halfWidth")
                     << "': the mesh cell at x = " << x << ", y = " << y
@@ -450,17 +541,30 @@ int main(int argc, char *argv[])
         release r;
         r.name = e.keyword();
         r.dict = &d;
-        if (d.found("polygon") == d.found("file"))
+        wordList shapes;
+        for (const word& key : {"polygon", "file", "raster"})
         {
+            if (d.found(key))
+            {
+                shapes.append(key);
+            }
+        }
+        if (shapes.size() != 1)
+        {
+            std::string given = shapes.empty() ? " none" : " several:";
+            for (const word& key : shapes)
+            {
+                given += " '" + key + "'";
+            }
             FatalIOErrorInFunction(d)
-                << "release " << r.name << ": give either 'polygon' ((X Y)"
-                << " ...) or 'file' (a shapefile), not "
-                << (d.found("polygon") ? "both" : "neither") << nl
+                << "release " << r.name << ": give one of 'polygon' ((X Y)"
+                << " ...), 'file' (a shapefile) or 'raster' (a thickness"
+                << " raster), not" << given.c_str() << nl
                 << exit(FatalIOError);
         }
-        if (d.found("polygon"))
+        r.shapeKey = shapes[0];
+        if (r.shapeKey == "polygon")
         {
-            r.shapeKey = "polygon";
             const List<vector2D> pts = d.get<List<vector2D>>("polygon");
             if (pts.size() < 3)
             {
@@ -476,13 +580,30 @@ int main(int argc, char *argv[])
             }
             r.polygons.push_back({ring});
         }
-        else
+        else if (r.shapeKey == "file")
         {
-            r.shapeKey = "file";
             const fileName f = caseFile(runTime, d, "file");
+            std::string wkt;
             try
             {
-                r.polygons = terrain::readPolygons(f);
+                r.polygons = terrain::readPolygons(f, wkt);
+            }
+            catch (const terrain::gdalError& err)
+            {
+                FatalIOErrorInFunction(d)
+                    << "keyword 'file' of release " << r.name << ": "
+                    << err.what() << nl << exit(FatalIOError);
+            }
+            const auto tr = toDemSystem(wkt, dem.wkt, f, d, "file", r.name);
+            try
+            {
+                for (terrain::Polygon& poly : r.polygons)
+                {
+                    for (terrain::Ring& ring : poly)
+                    {
+                        tr->apply(ring);
+                    }
+                }
             }
             catch (const terrain::gdalError& err)
             {
@@ -491,7 +612,47 @@ int main(int argc, char *argv[])
                     << err.what() << nl << exit(FatalIOError);
             }
         }
-        r.thickness = readPositive(d, "thickness");
+        else
+        {
+            try
+            {
+                terrain::rasterDriver(d.get<fileName>("raster"));
+            }
+            catch (const terrain::gdalError& err)
+            {
+                FatalIOErrorInFunction(d)
+                    << "keyword 'raster' of release " << r.name << ": "
+                    << err.what() << nl << exit(FatalIOError);
+            }
+            r.rasterFile = caseFile(runTime, d, "raster");
+            try
+            {
+                r.raster = terrain::readRaster(r.rasterFile);
+            }
+            catch (const terrain::gdalError& err)
+            {
+                FatalIOErrorInFunction(d)
+                    << "keyword 'raster' of release " << r.name << ": "
+                    << err.what() << nl << exit(FatalIOError);
+            }
+            checkThicknessRaster(r.raster, r.rasterFile, d, r.name);
+            if (d.found("thickness"))
+            {
+                FatalIOErrorInFunction(d)
+                    << "keyword 'thickness' of release " << r.name
+                    << ": a release raster gives the thickness itself;"
+                    << " remove 'thickness' (or scale the raster)" << nl
+                    << exit(FatalIOError);
+            }
+            r.rasterToDem = toDemSystem
+            (
+                r.raster.wkt, dem.wkt, r.rasterFile, d, "raster", r.name
+            );
+        }
+        if (r.shapeKey != "raster")
+        {
+            r.thickness = readPositive(d, "thickness");
+        }
         const word dir = d.get<word>("thicknessDirection");
         if (dir != "normal" && dir != "vertical")
         {
@@ -501,7 +662,7 @@ int main(int argc, char *argv[])
                 << " vertical)" << nl << exit(FatalIOError);
         }
         r.vertical = (dir == "vertical");
-        releases.push_back(r);
+        releases.push_back(std::move(r));
     }
 
     // Cos of the DEM's slope at a cell's bed point (vertical thickness)
@@ -603,29 +764,91 @@ int main(int argc, char *argv[])
                 }
             }
         }
-        scalar volume = 0;
+        // The thickness in each cell, normal or vertical as given
+        scalarField d(nCells, Zero);
         forAll(frac, c)
         {
             // Overlapping polygons of one release count once
-            const scalar f = min(max(frac[c], scalar(0)), scalar(1));
-            if (f > 0)
+            d[c] = r.thickness*min(max(frac[c], scalar(0)), scalar(1));
+        }
+        terrain::rasterRelease mapped;
+        if (r.shapeKey == "raster")
+        {
+            try
             {
-                const scalar hc = r.thickness*(r.vertical ? cosSlope(c) : 1);
-                h[c] += f*hc;
-                volume += f*hc*cellArea;
+                mapped = terrain::mapRasterRelease
+                (
+                    r.raster, *r.rasterToDem, dem, surface,
+                    {nx, ny, cellSize, yMax}
+                );
+            }
+            catch (const terrain::gdalError& err)
+            {
+                FatalIOErrorInFunction(*r.dict)
+                    << "keyword 'raster' of release " << r.name << ": "
+                    << err.what() << nl << exit(FatalIOError);
+            }
+            if (!mapped.nPixels)
+            {
+                FatalIOErrorInFunction(*r.dict)
+                    << "keyword 'raster' of release " << r.name << ": "
+                    << r.rasterFile << " holds no thickness > 0" << nl
+                    << exit(FatalIOError);
+            }
+            forAll(d, c)
+            {
+                d[c] = mapped.h[c];
+            }
+        }
+        scalar volume = 0;
+        forAll(d, c)
+        {
+            if (d[c] > 0)
+            {
+                const scalar hc = d[c]*(r.vertical ? cosSlope(c) : 1);
+                h[c] += hc;
+                volume += hc*cellArea;
             }
         }
         if (!(volume > 0))
         {
             FatalIOErrorInFunction(*r.dict)
                 << "keyword '" << r.shapeKey << "' of release " << r.name
-                << ": the release covers no area of the mesh" << nl
+                << ": the release "
+                << (r.shapeKey == "raster" ? r.rasterFile + " " : "")
+                << "covers no area of the mesh" << nl
                 << exit(FatalIOError);
         }
-        Info<< "Release " << r.name << ": " << r.polygons.size()
-            << " polygon(s), thickness " << r.thickness << " m "
-            << (r.vertical ? "vertical" : "normal") << ", volume " << volume
-            << " m^3" << nl;
+        if (r.shapeKey == "raster")
+        {
+            Info<< "    raster " << r.rasterFile << ": " << mapped.nPixels
+                << " pixels of thickness in [" << mapped.dMin << ", "
+                << mapped.dMax << "] m, sum of thickness x pixel area in"
+                << " the DEM's plan " << mapped.planVolume << " m^3; "
+                << mapped.subdivisions << " x " << mapped.subdivisions
+                << " sub-pixels" << nl;
+            if (mapped.nOutside || mapped.nOffDem)
+            {
+                WarningInFunction
+                    << "release " << r.name << ": " << mapped.nOutside
+                    << " of the " << mapped.nPixels << " pixels of "
+                    << r.rasterFile << " with thickness > 0 reach outside"
+                    << " the mesh (" << mapped.outsideVolume << " m^3 of"
+                    << " thickness x area there is dropped), "
+                    << mapped.nOffDem << " reach off the DEM (dropped)"
+                    << nl << endl;
+            }
+            Info<< "Release " << r.name << ": raster, thickness "
+                << (r.vertical ? "vertical" : "normal") << ", volume "
+                << volume << " m^3" << nl;
+        }
+        else
+        {
+            Info<< "Release " << r.name << ": " << r.polygons.size()
+                << " polygon(s), thickness " << r.thickness << " m "
+                << (r.vertical ? "vertical" : "normal") << ", volume "
+                << volume << " m^3" << nl;
+        }
         releasedVolume += volume;
     }
     Info<< "Released volume " << releasedVolume << " m^3" << nl << endl;

@@ -63,6 +63,8 @@ Problem<Real>::Problem
     grid.ny = ny;
     grid.dx = Real((xMax - xMin)/nx);
     grid.dy = Real((yMax - yMin)/ny);
+    grid.rdx = Real(1)/grid.dx;
+    grid.rdy = Real(1)/grid.dy;
     grid.x0 = Real(xMin);
     grid.y0 = Real(yMin);
     zeta.assign(nx, Real(0));

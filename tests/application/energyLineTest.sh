@@ -1,0 +1,119 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# savageHutterFoam: Savage-Hutter granular avalanche solver
+#
+# Description
+#     The energy line (issue 14, item 7): a Coulomb slide with lambda = 0
+#     (friction mu g cos(zeta), whose work is mu g times the horizontal
+#     distance travelled) on a concave chute stops with its centre of mass
+#     on the line of slope tan(delta) from where it started, so hazardMaps'
+#     comTravelAngle is delta.  The chute is a DEM this test writes: its
+#     slope falls linearly from 35 deg at the top to 5 deg 600 m down, then
+#     stays 5 deg to 900 m; a shallow parabolic trough across (10 m up at
+#     100 m to either side) keeps the flow off the sides.  terrainToCase
+#     (20 m cells, 47 x 10), the solver to rest (steadyStateTolerance),
+#     hazardMaps; passes when |comTravelAngle - delta| < 0.5 deg, no volume
+#     left the mesh and the run ended at rest.  About 2 s.
+#     Prints one line per check and "N passed, M failed".
+#
+# Usage
+#     energyLineTest.sh <project dir> <work dir>
+#------------------------------------------------------------------------------
+set -u
+project="$1"
+work="$2"
+. "$project/bin/tools/RunFunctions"
+python=/usr/bin/python3
+delta=20
+
+passed=0
+failed=0
+pass() { echo "PASS  $*"; passed=$((passed + 1)); }
+fail() { echo "FAIL  $*"; failed=$((failed + 1)); }
+
+rm -rf "$work"
+mkdir -p "$work/system" "$work/constant"
+cd "$work" || exit 1
+tutorial="$project/tutorials/terrainChute"
+cp "$tutorial"/system/{controlDict,fvSolution,fvSchemes} system/
+cp "$tutorial"/constant/transportProperties constant/
+setEntry constant/transportProperties lambda 0
+setEntry constant/transportProperties CoulombCoeffs/delta "$delta"
+setEntry system/controlDict endTime 400
+setEntry system/controlDict writeInterval 50
+
+$python - <<'PYEOF'
+import math
+NX, NY, D, X0, Y0 = 240, 70, 4.0, -20.0, -140.0
+def angle(x):
+    return math.radians(35 + (5 - 35)*min(max(x/600, 0), 1))
+def profile(x):
+    # elevation of the centre line: -int tan(angle) dx, midpoint rule on
+    # 0.5 m steps
+    n = max(1, int(abs(x)/0.5))
+    h = x/n
+    return 1000 - sum(math.tan(angle((k + 0.5)*h))*h for k in range(n))
+with open("constant/chute.asc", "w") as o:
+    o.write(f"ncols {NX}\nnrows {NY}\nxllcorner {X0}\nyllcorner {Y0}\n"
+            f"cellsize {D}\nNODATA_value -9999\n")
+    col = [profile(X0 + (i + 0.5)*D) for i in range(NX)]
+    for j in range(NY):
+        y = Y0 + (NY - j - 0.5)*D
+        o.write(" ".join("%.17g" % (col[i] + 10*(y/100)**2)
+                         for i in range(NX)) + "\n")
+PYEOF
+
+cat > system/terrainDict <<'EOD'
+FoamFile { version 2.0; format ascii; class dictionary; object terrainDict; }
+dem             "constant/chute.asc";
+axis            ((0 0) (900 0));
+halfWidth       100;
+cellSize        20;
+profileSmoothing 40;
+release
+{
+    slab
+    {
+        polygon     ((40 -40) (120 -40) (120 40) (40 40));
+        thickness   3;
+        thicknessDirection vertical;
+    }
+}
+EOD
+
+start=$SECONDS
+if runApplication terrainToCase && runApplication blockMesh \
+    && runApplication savageHutterFoam && runApplication hazardMaps
+then
+    latest="$(ls postProcessing/hazardMaps | sort -g | tail -n1)"
+    report="postProcessing/hazardMaps/$latest/report.dat"
+    get() { sed -n "s/^$1 //p" "$report"; }
+    com="$(get comTravelAngle)"
+    if $python -c "import sys; sys.exit(0 if abs($com - $delta) < 0.5 else 1)"
+    then
+        pass "energy line: comTravelAngle $com deg, delta $delta deg (|difference| < 0.5)"
+    else
+        fail "energy line: comTravelAngle $com deg, delta $delta deg (|difference| >= 0.5)"
+    fi
+    released="$(get releasedVolume)"
+    deposit="$(get depositVolume)"
+    if $python -c "import sys; sys.exit(0 if abs($deposit - $released) <= 1e-9*$released else 1)"
+    then
+        pass "no volume left the mesh: released $released m^3, at t = $latest $deposit m^3"
+    else
+        fail "volume left the mesh: released $released m^3, at t = $latest $deposit m^3"
+    fi
+    if grep -q "steady state reached" log.savageHutterFoam
+    then
+        pass "at rest: $(grep -o 'steady state reached.*' log.savageHutterFoam)"
+    else
+        fail "not at rest by endTime (see $work/log.savageHutterFoam)"
+    fi
+else
+    fail "terrainToCase, blockMesh, savageHutterFoam or hazardMaps failed (see $work/log.*)"
+fi
+echo "($((SECONDS - start)) s)"
+
+echo
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ] && [ "$passed" -gt 0 ]
