@@ -18,18 +18,10 @@
 # Usage
 #     caseTests.sh <project dir> <work dir>
 #------------------------------------------------------------------------------
-set -u
 project="$1"
 work="$2"
-. "$project/bin/tools/RunFunctions"
+. "$project/tests/application/testFunctions.sh"
 
-passed=0
-failed=0
-pass() { echo "PASS  $*"; passed=$((passed + 1)); }
-fail() { echo "FAIL  $*"; failed=$((failed + 1)); }
-
-rm -rf "$work"
-mkdir -p "$work"
 base="$work/base"
 mkdir "$base"
 cp -r "$project"/tutorials/damBreak/{0.orig,constant,system} "$base"/
@@ -49,11 +41,6 @@ newCase()
     cp -r "$base" "$work/$1"
     rm -f "$work/$1"/log.*
     echo "$work/$1"
-}
-
-timeDirs()
-{
-    (cd "$1" && ls -d [0-9]* 2>/dev/null | grep -v '^0$' | grep -v orig)
 }
 
 #- expectFailure <name> <pattern>... : run savageHutterFoam in case <name>
@@ -593,16 +580,6 @@ else
 fi
 
 # -- Time directories appear complete or not at all --------------------------
-#- complete <case> <time>: every field and uniform/time there, each file
-#  ending with the end divider of a finished write
-complete()
-{
-    local f
-    for f in h U hU zb regime hMax UMax uniform/time
-    do
-        tail -n 2 "$1/$2/$f" 2>/dev/null | grep -q '^// \*\*\*' || return 1
-    done
-}
 
 # A run killed (SIGKILL) again and again while it writes a time directory
 # every step: every time directory it leaves is complete; what it was
@@ -753,17 +730,6 @@ liveEdit()
         shift 2
     done
     mv "$d/system/controlDict.new" "$d/system/controlDict"
-}
-#- waitFor <file> <regex> <seconds>: until the file has a matching line
-waitFor()
-{
-    local i
-    for i in $(seq $(($3 * 10)))
-    do
-        grep -qE "$2" "$1" 2>/dev/null && return 0
-        sleep 0.1
-    done
-    return 1
 }
 #- onGrid <time> <interval>: whether time is a multiple of interval
 onGrid()
@@ -1226,6 +1192,4 @@ else
     fail "foamToVTK failed (see $full/log.foamToVTK)"
 fi
 
-echo
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

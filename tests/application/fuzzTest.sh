@@ -71,15 +71,9 @@
 # Usage
 #     fuzzTest.sh <project dir> <work dir>
 #------------------------------------------------------------------------------
-set -u
 project="$1"
 work="$2"
-. "$project/bin/tools/RunFunctions"
-
-passed=0
-failed=0
-pass() { echo "PASS  $*"; passed=$((passed + 1)); }
-fail() { echo "FAIL  $*"; failed=$((failed + 1)); }
+. "$project/tests/application/testFunctions.sh"
 
 # A variant that runs longer than this is BAD (the base case takes 0.2 s)
 limit=20
@@ -91,9 +85,6 @@ cd_=system/controlDict
 sa=system/setAvalancheFieldsDict
 fo=system/fvOptions
 bm=system/blockMeshDict
-
-rm -rf "$work"
-mkdir -p "$work"
 
 # -- The prepared cases ---------------------------------------------------------
 #- The impinging jet of the jet case: a mesh point of the 16 x 2 mesh
@@ -908,6 +899,4 @@ printf '%s' "$table"
 echo
 echo "Variants tried: $nTried   OK: $nOK   REJECTED: $nRejected   BAD: $nBad   KNOWN BAD: $nKnown   ($((SECONDS - start)) s)"
 echo "blockMesh (OpenFOAM's) crashed on $nCrashedBlockMesh of them; the solver then met the mesh of the case before the edit"
-echo
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

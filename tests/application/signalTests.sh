@@ -38,20 +38,10 @@
 # Usage
 #     signalTests.sh <project dir> <work dir>
 #------------------------------------------------------------------------------
-set -u
 project="$1"
 work="$2"
-. "$project/bin/tools/RunFunctions"
-
-passed=0
-failed=0
-pass() { echo "PASS  $*"; passed=$((passed + 1)); }
-fail() { echo "FAIL  $*"; failed=$((failed + 1)); }
+. "$project/tests/application/testFunctions.sh"
 export OMP_NUM_THREADS=1
-
-rm -rf "$work"
-mkdir -p "$work"
-work="$(cd "$work" && pwd)"
 
 #- makeCase <dir> <nx> <ny>: the damBreak tutorial on nx x ny cells, h set
 makeCase()
@@ -67,23 +57,7 @@ makeCase()
     ) > "$1.setup.log" 2>&1
 }
 
-timeDirs()
-{
-    (cd "$1" && ls -d [0-9]* 2>/dev/null | grep -v '^0$' | grep -v orig | sort -g)
-}
-
-#- complete <case> <time>: every field and uniform/time there, each file
-#  ending with the end divider of a finished write
-complete()
-{
-    local f
-    for f in h U hU zb regime hMax UMax uniform/time
-    do
-        tail -n 2 "$1/$2/$f" 2>/dev/null | grep -q '^// \*\*\*' || return 1
-    done
-}
-
-#- allComplete <case>: the time directories that are not complete
+#- incomplete <case>: the time directories that are not complete
 incomplete()
 {
     local t out=""
@@ -92,18 +66,6 @@ incomplete()
         complete "$1" "$t" || out="$out $t"
     done
     echo "$out"
-}
-
-#- waitFor <file> <regex> <seconds>: until the file has a matching line
-waitFor()
-{
-    local i
-    for i in $(seq $(($3 * 10)))
-    do
-        grep -qE "$2" "$1" 2>/dev/null && return 0
-        sleep 0.1
-    done
-    return 1
 }
 
 # -- SIGINT: write the state and end the run -----------------------------------
@@ -443,6 +405,4 @@ else
     fail "restore: rc $rc (see $d/log.restore)"
 fi
 
-echo
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish
