@@ -293,11 +293,54 @@ expectFailure controlDictStartTimeNan "system/controlDict" "startTime" "(-1e+30,
 d=$(newCase controlDictTimeStepFraction)
 setRaw "$d/system/controlDict" writeControl timeStep
 setRaw "$d/system/controlDict" writeInterval 2.5
-expectFailure controlDictTimeStepFraction "system/controlDict" "writeInterval" "an integer in [1, inf)"
+expectFailure controlDictTimeStepFraction "system/controlDict" "writeInterval" "an integer in [1, 2147483647]"
 
 d=$(newCase controlDictStopAtWriteNow)
 setRaw "$d/system/controlDict" stopAt writeNow
 expectFailure controlDictStopAtWriteNow "system/controlDict" "stopAt writeNow" "(endTime)"
+
+# Values with which a run would write for ever: timeStep writes beyond a
+# label, wall-clock writes below a second (OpenFOAM counts them as the label
+# elapsed/writeInterval), steps that cannot reach endTime within 1e10 (for
+# every writeControl) or the first write time within 1e8 (adjustableRunTime)
+#- stepsCase <name> <keyword> <value>...: the case with controlDict entries
+stepsCase()
+{
+    local name="$1"
+    shift
+    d=$(newCase "$name")
+    while [ $# -ge 2 ]
+    do
+        setRaw "$d/system/controlDict" "$1" "$2"
+        shift 2
+    done
+}
+stepsCase timeStepBeyondLabel writeControl timeStep writeInterval 1e20
+expectFailure timeStepBeyondLabel "system/controlDict" "writeInterval" "an integer in [1, 2147483647]"
+stepsCase clockTimeTiny writeControl clockTime writeInterval 1e-12
+expectFailure clockTimeTiny "system/controlDict" "writeInterval" "[1, inf)" "32-bit label"
+stepsCase cpuTimeHalf writeControl cpuTime writeInterval 0.5
+expectFailure cpuTimeHalf "system/controlDict" "writeInterval" "[1, inf)"
+stepsCase timeStepTinyMaxDeltaT writeControl timeStep writeInterval 1 maxDeltaT 1e-200
+expectFailure timeStepTinyMaxDeltaT "system/controlDict" "maxDeltaT" "never end" "maxDeltaT >= 1e-11"
+stepsCase clockTimeTinyDeltaT writeControl clockTime writeInterval 1 adjustTimeStep no deltaT 1e-200
+expectFailure clockTimeTinyDeltaT "system/controlDict" "deltaT" "never end" "deltaT >= 1e-11"
+stepsCase cpuTimeSmallMaxDeltaT writeControl cpuTime writeInterval 1 maxDeltaT 1e-12
+expectFailure cpuTimeSmallMaxDeltaT "system/controlDict" "maxDeltaT" "never end" "maxDeltaT >= 1e-11"
+stepsCase tinyWriteInterval writeInterval 1e-12
+expectFailure tinyWriteInterval "system/controlDict" "writeInterval" "land on every write time" "writeInterval >= 1e-11"
+stepsCase firstWriteMaxDeltaT maxDeltaT 2e-10
+expectFailure firstWriteMaxDeltaT "system/controlDict" "maxDeltaT" "seem to hang" "maxDeltaT >= 5e-10"
+stepsCase fixedStepEndTime adjustTimeStep no endTime 1e20
+expectFailure fixedStepEndTime "system/controlDict" "deltaT" "never end" "endTime <= "
+# The initial state: speeds beyond light (U) and wave speeds beyond it (h),
+# with timeStep writes, where no first write time bounds the steps
+stepsCase lightSpeedU writeControl timeStep writeInterval 1
+foamDictionary "$d/0/U" -entry internalField -set "uniform (1e20 0 0)" > /dev/null
+expectFailure lightSpeedU "0/U" "U = (1e+20 0 0)" "speed of light"
+stepsCase lightSpeedC writeControl timeStep writeInterval 1
+foamDictionary "$d/0/h" -entry internalField -set "uniform 1e20" > /dev/null
+expectFailure lightSpeedC "wave speed" "speed of light" "h = 1e+20" "0/h"
 
 # -- Initial fields ------------------------------------------------------------
 d=$(newCase negativeH)
