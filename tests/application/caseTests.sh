@@ -18,18 +18,10 @@
 # Usage
 #     caseTests.sh <project dir> <work dir>
 #------------------------------------------------------------------------------
-set -u
 project="$1"
 work="$2"
-. "$project/bin/tools/RunFunctions"
+. "$project/tests/application/testFunctions.sh"
 
-passed=0
-failed=0
-pass() { echo "PASS  $*"; passed=$((passed + 1)); }
-fail() { echo "FAIL  $*"; failed=$((failed + 1)); }
-
-rm -rf "$work"
-mkdir -p "$work"
 base="$work/base"
 mkdir "$base"
 cp -r "$project"/tutorials/damBreak/{0.orig,constant,system} "$base"/
@@ -49,11 +41,6 @@ newCase()
     cp -r "$base" "$work/$1"
     rm -f "$work/$1"/log.*
     echo "$work/$1"
-}
-
-timeDirs()
-{
-    (cd "$1" && ls -d [0-9]* 2>/dev/null | grep -v '^0$' | grep -v orig)
 }
 
 #- expectFailure <name> <pattern>... : run savageHutterFoam in case <name>
@@ -306,11 +293,54 @@ expectFailure controlDictStartTimeNan "system/controlDict" "startTime" "(-1e+30,
 d=$(newCase controlDictTimeStepFraction)
 setRaw "$d/system/controlDict" writeControl timeStep
 setRaw "$d/system/controlDict" writeInterval 2.5
-expectFailure controlDictTimeStepFraction "system/controlDict" "writeInterval" "an integer in [1, inf)"
+expectFailure controlDictTimeStepFraction "system/controlDict" "writeInterval" "an integer in [1, 2147483647]"
 
 d=$(newCase controlDictStopAtWriteNow)
 setRaw "$d/system/controlDict" stopAt writeNow
 expectFailure controlDictStopAtWriteNow "system/controlDict" "stopAt writeNow" "(endTime)"
+
+# Values with which a run would write for ever: timeStep writes beyond a
+# label, wall-clock writes below a second (OpenFOAM counts them as the label
+# elapsed/writeInterval), steps that cannot reach endTime within 1e10 (for
+# every writeControl) or the first write time within 1e8 (adjustableRunTime)
+#- stepsCase <name> <keyword> <value>...: the case with controlDict entries
+stepsCase()
+{
+    local name="$1"
+    shift
+    d=$(newCase "$name")
+    while [ $# -ge 2 ]
+    do
+        setRaw "$d/system/controlDict" "$1" "$2"
+        shift 2
+    done
+}
+stepsCase timeStepBeyondLabel writeControl timeStep writeInterval 1e20
+expectFailure timeStepBeyondLabel "system/controlDict" "writeInterval" "an integer in [1, 2147483647]"
+stepsCase clockTimeTiny writeControl clockTime writeInterval 1e-12
+expectFailure clockTimeTiny "system/controlDict" "writeInterval" "[1, inf)" "32-bit label"
+stepsCase cpuTimeHalf writeControl cpuTime writeInterval 0.5
+expectFailure cpuTimeHalf "system/controlDict" "writeInterval" "[1, inf)"
+stepsCase timeStepTinyMaxDeltaT writeControl timeStep writeInterval 1 maxDeltaT 1e-200
+expectFailure timeStepTinyMaxDeltaT "system/controlDict" "maxDeltaT" "never end" "maxDeltaT >= 1e-11"
+stepsCase clockTimeTinyDeltaT writeControl clockTime writeInterval 1 adjustTimeStep no deltaT 1e-200
+expectFailure clockTimeTinyDeltaT "system/controlDict" "deltaT" "never end" "deltaT >= 1e-11"
+stepsCase cpuTimeSmallMaxDeltaT writeControl cpuTime writeInterval 1 maxDeltaT 1e-12
+expectFailure cpuTimeSmallMaxDeltaT "system/controlDict" "maxDeltaT" "never end" "maxDeltaT >= 1e-11"
+stepsCase tinyWriteInterval writeInterval 1e-12
+expectFailure tinyWriteInterval "system/controlDict" "writeInterval" "land on every write time" "writeInterval >= 1e-11"
+stepsCase firstWriteMaxDeltaT maxDeltaT 2e-10
+expectFailure firstWriteMaxDeltaT "system/controlDict" "maxDeltaT" "seem to hang" "maxDeltaT >= 5e-10"
+stepsCase fixedStepEndTime adjustTimeStep no endTime 1e20
+expectFailure fixedStepEndTime "system/controlDict" "deltaT" "never end" "endTime <= "
+# The initial state: speeds beyond light (U) and wave speeds beyond it (h),
+# with timeStep writes, where no first write time bounds the steps
+stepsCase lightSpeedU writeControl timeStep writeInterval 1
+foamDictionary "$d/0/U" -entry internalField -set "uniform (1e20 0 0)" > /dev/null
+expectFailure lightSpeedU "0/U" "U = (1e+20 0 0)" "speed of light"
+stepsCase lightSpeedC writeControl timeStep writeInterval 1
+foamDictionary "$d/0/h" -entry internalField -set "uniform 1e20" > /dev/null
+expectFailure lightSpeedC "wave speed" "speed of light" "h = 1e+20" "0/h"
 
 # -- Initial fields ------------------------------------------------------------
 d=$(newCase negativeH)
@@ -595,16 +625,6 @@ else
 fi
 
 # -- Time directories appear complete or not at all --------------------------
-#- complete <case> <time>: every field and uniform/time there, each file
-#  ending with the end divider of a finished write
-complete()
-{
-    local f
-    for f in h U hU zb regime hMax UMax uniform/time
-    do
-        tail -n 2 "$1/$2/$f" 2>/dev/null | grep -q '^// \*\*\*' || return 1
-    done
-}
 
 # A run killed (SIGKILL) again and again while it writes a time directory
 # every step: every time directory it leaves is complete; what it was
@@ -755,17 +775,6 @@ liveEdit()
         shift 2
     done
     mv "$d/system/controlDict.new" "$d/system/controlDict"
-}
-#- waitFor <file> <regex> <seconds>: until the file has a matching line
-waitFor()
-{
-    local i
-    for i in $(seq $(($3 * 10)))
-    do
-        grep -qE "$2" "$1" 2>/dev/null && return 0
-        sleep 0.1
-    done
-    return 1
 }
 #- onGrid <time> <interval>: whether time is a multiple of interval
 onGrid()
@@ -1370,6 +1379,4 @@ else
     fail "hazardMaps times: the shortened terrainChute case failed (see $d/log.prepare)"
 fi
 
-echo
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

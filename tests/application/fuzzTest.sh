@@ -9,25 +9,48 @@
 #     prepared case is made with the entry
 #         missing, of the wrong type, NaN, negative, zero, huge (1e300 and a
 #         finite 1e20), misspelt (the keyword, and for a name from a set
-#         also the value), for vectors also of the wrong size,
-#     and, for some keywords, values that break a rule between two entries
-#     (delta > phi with activePassive, zeta1 >= zeta2, ...; these must be
-#     rejected).  Variants that make no sense for a keyword are left out (an
-#     absent optional entry cannot go missing; endTime 1e20 is a legal run
-#     that ends when the user ends it).  The prepared cases:
+#         also the value), for vectors and fields also of the wrong size,
+#     a whole file of a start time directory missing, empty, without its
+#     header, of another class or cut short, and, for some keywords,
+#     values that break a rule between two entries (delta > phi with
+#     activePassive, zeta1 >= zeta2, a step that cannot reach endTime, ...;
+#     these must be rejected).  Variants that make no sense for a keyword
+#     are left out (an absent optional entry cannot go missing; with
+#     adjustableRunTime writes and no maxDeltaT, endTime 1e20 is a legal
+#     run that ends when the user ends it).  The prepared cases:
 #       base       Coulomb friction, isotropic earth pressure: the entries of
 #                  transportProperties, fvSolution::savageHutter, controlDict,
 #                  0/h and 0/U (dimensions, internalField, patch types);
+#       timeStep, clockTime, fixedDt  writeControl timeStep (every step),
+#                  clockTime (every second), adjustTimeStep no: their
+#                  writeInterval, maxDeltaT, deltaT, endTime (steps that
+#                  cannot reach endTime within 1e10), and with timeStep
+#                  writes g, epsilon, 0/h, 0/U (no first write time bounds
+#                  the steps there: speeds and wave speeds beyond light);
+#       table      inclination as a table: empty, one entry, unsorted or
+#                  repeated x, angles of +-90 degrees and beyond (also only
+#                  between two cell centres), NaN, tuples of the wrong
+#                  form, huge;
 #       voellmy, pf  frictionModel Voellmy, PouliquenForterre: their
 #                  <Model>Coeffs and every coefficient;
 #       ap, apVoellmy  earthPressure activePassive with Coulomb (delta,
 #                  phi) and with Voellmy (mu: atan(mu) > phi is rejected);
 #       jet        system/fvOptions with an impingingJet: centre, R, R_imp,
-#                  u_jet, type, active;
+#                  u_jet, type, active, selectionMode;
+#       jetCoeffs  the same with the coefficients in impingingJetCoeffs:
+#                  the sub-dictionary and each coefficient, type,
+#                  selectionMode;
+#       jetConstant  the jet in constant/fvOptions: its entries, and both
+#                  files at once (rejected);
 #       zb         a bed 0/zb (from setAvalancheFields): dimensions,
 #                  internalField, boundaryField;
 #       inflow     fixedValue inflow on the upslope side: the value of h
 #                  and U there;
+#       restart    a run to 0.01 restarted from latestTime to 0.02: in
+#                  0.01/ the files h, U, hU, hMax, UMax (each whole, and
+#                  its dimensions, internalField, boundaryField),
+#                  uniform/time (whole, value, name, index, deltaT,
+#                  deltaT0) and uniform/writeGrid (whole, origin);
 #       mesh       system/blockMeshDict (nx, ny, convertToMeters, the block:
 #                  3D, zero cells in z, graded, skewed, two blocks,
 #                  rotated, named); blockMesh is run first (not for
@@ -48,13 +71,15 @@
 #                 patch value: the keyword or the field file, as in "h = -1
 #                 in cell 0 ... file: 0/h"; the block of blockMeshDict:
 #                 blocks, simpleGrading or "aligned"), no stack trace, and
-#                 nothing written: no time directory besides 0
-#                 (setAvalancheFields: 0/ unchanged).
+#                 nothing written: no time directory besides 0 (and the
+#                 start time of the restart; setAvalancheFields: 0/
+#                 unchanged).
 #     Anything else (a crash, a signal, NaN written, a message that does not
 #     name the keyword, a run that hangs, a rule-breaking value that runs, a
 #     misspelt keyword ignored: except in controlDict, where OpenFOAM's Time
 #     takes any entry and a misspelt optional one falls back to its default,
-#     and the name of an fvOptions source, which is free) is BAD: a FAIL line, except the variants of the list "known" below,
+#     and the name of an fvOptions source, which is free) is BAD: a FAIL
+#     line, except the variants of the list "known" below,
 #     BAD today and reported, which print KNOWN lines and are counted
 #     apart.  blockMesh is OpenFOAM's (Debian's v1912): where it crashes
 #     (it segfaults on a zero or negative cell count) the line says so and
@@ -71,15 +96,9 @@
 # Usage
 #     fuzzTest.sh <project dir> <work dir>
 #------------------------------------------------------------------------------
-set -u
 project="$1"
 work="$2"
-. "$project/bin/tools/RunFunctions"
-
-passed=0
-failed=0
-pass() { echo "PASS  $*"; passed=$((passed + 1)); }
-fail() { echo "FAIL  $*"; failed=$((failed + 1)); }
+. "$project/tests/application/testFunctions.sh"
 
 # A variant that runs longer than this is BAD (the base case takes 0.2 s)
 limit=20
@@ -90,14 +109,14 @@ fs=system/fvSolution
 cd_=system/controlDict
 sa=system/setAvalancheFieldsDict
 fo=system/fvOptions
+foc=constant/fvOptions
 bm=system/blockMeshDict
-
-rm -rf "$work"
-mkdir -p "$work"
 
 # -- The prepared cases ---------------------------------------------------------
 #- The impinging jet of the jet case: a mesh point of the 16 x 2 mesh
-jetEntries="type impingingJet; active yes; centre (0 0 0); R 1; R_imp 2; u_jet 1;"
+jetOuter="type impingingJet; active yes; selectionMode all;"
+jetCoeffs="centre (0 0 0); R 1; R_imp 2; u_jet 1;"
+jetEntries="$jetOuter $jetCoeffs"
 fvOptionsHeader='FoamFile { version 2.0; format ascii; class dictionary; object fvOptions; }'
 
 #- clean <case>: no time directory but 0, no logs
@@ -161,6 +180,46 @@ runs()
     echo "$fvOptionsHeader jet { $jetEntries }" > "$d/$fo"
     runs "$d"
 
+    d="$work/jetCoeffs"; cp -r "$b" "$d"
+    echo "$fvOptionsHeader jet { $jetOuter impingingJetCoeffs { $jetCoeffs } }" > "$d/$fo"
+    runs "$d"
+
+    d="$work/jetConstant"; cp -r "$b" "$d"
+    echo "$fvOptionsHeader jet { $jetEntries }" > "$d/$foc"
+    runs "$d"
+
+    d="$work/table"; cp -r "$b" "$d"
+    setEntry "$d/$tp" inclination 'table ((-12.8 40) (0 35) (12.8 30))'
+    runs "$d"
+
+    d="$work/timeStep"; cp -r "$b" "$d"
+    setEntry "$d/$cd_" writeControl timeStep
+    setEntry "$d/$cd_" writeInterval 1
+    runs "$d"
+
+    d="$work/clockTime"; cp -r "$b" "$d"
+    setEntry "$d/$cd_" writeControl clockTime
+    setEntry "$d/$cd_" writeInterval 1
+    runs "$d"
+
+    d="$work/fixedDt"; cp -r "$b" "$d"
+    setEntry "$d/$cd_" adjustTimeStep no
+    setEntry "$d/$cd_" deltaT 0.001
+    runs "$d"
+
+    # A restart: 0 -> 0.01 written, then latestTime -> 0.02; .keep names
+    # the time directories that are no output of a variant
+    d="$work/restart"; cp -r "$b" "$d"
+    setEntry "$d/$cd_" endTime 0.01
+    runs "$d"
+    (cd "$d" && savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1)
+    [ -f "$d/0.01/hU" ] && [ -f "$d/0.01/uniform/writeGrid" ] \
+        || { echo "set-up: $d wrote no 0.01"; exit 1; }
+    rm -rf "$d"/log.* "$d/postProcessing"
+    setEntry "$d/$cd_" endTime 0.02
+    setEntry "$d/$cd_" startFrom latestTime
+    echo 0.01 > "$d/.keep"
+
     d="$work/zb"; cp -r "$b" "$d"
     echo 'FoamFile { version 2.0; format ascii; class dictionary; object zbDict; }
 zb ( plane { gradient (0.02 0.05); } );' > "$d/system/zbDict"
@@ -195,6 +254,7 @@ savageHutterFoam|base|$tp|g|num
 savageHutterFoam|base|$tp|epsilon|num
 savageHutterFoam|base|$tp|lambda|num
 savageHutterFoam|base|$tp|inclination|fn1
+savageHutterFoam|table|$tp|inclination|table
 savageHutterFoam|base|$tp|earthPressure|word:isotropic
 savageHutterFoam|base|$tp|phi|num
 savageHutterFoam|base|$tp|frictionModel|word:Coulomb
@@ -230,9 +290,9 @@ savageHutterFoam|base|$cd_|endTime|num|-huge20
 savageHutterFoam|base|$cd_|deltaT|num
 savageHutterFoam|base|$cd_|adjustTimeStep|switch:yes
 savageHutterFoam|base|$cd_|maxCo|num
-savageHutterFoam|base|$cd_|maxDeltaT|optnum
+savageHutterFoam|base|$cd_|maxDeltaT|optnum|tiny=1e-200!,firstWrite=1e-11!
 savageHutterFoam|base|$cd_|writeControl|word:adjustableRunTime
-savageHutterFoam|base|$cd_|writeInterval|num
+savageHutterFoam|base|$cd_|writeInterval|num|tiny=1e-12!
 savageHutterFoam|base|$cd_|purgeWrite|num
 savageHutterFoam|base|$cd_|writeFormat|word:ascii
 savageHutterFoam|base|$cd_|writePrecision|num
@@ -240,13 +300,40 @@ savageHutterFoam|base|$cd_|writeCompression|word:off
 savageHutterFoam|base|$cd_|timeFormat|word:general
 savageHutterFoam|base|$cd_|timePrecision|num
 savageHutterFoam|base|$cd_|runTimeModifiable|switch:false
+savageHutterFoam|timeStep|$cd_|writeInterval|num|fraction=2.5!,large=2e9,aboveLabelMax=3e9!
+savageHutterFoam|timeStep|$cd_|maxDeltaT|optnum|tiny=1e-200!,small=1e-12!
+savageHutterFoam|timeStep|$tp|g|num
+savageHutterFoam|timeStep|$tp|epsilon|num
+savageHutterFoam|timeStep|0/h|internalField|sfield
+savageHutterFoam|timeStep|0/U|internalField|vfield|light=uniform (3e8 0 0)!
+savageHutterFoam|clockTime|$cd_|writeInterval|num|tiny=1e-12!,half=0.5!,one=1
+savageHutterFoam|clockTime|$cd_|maxDeltaT|optnum|tiny=1e-200!
+savageHutterFoam|fixedDt|$cd_|deltaT|num|tiny=1e-200!,small=1e-12!
+savageHutterFoam|fixedDt|$cd_|endTime|num
 savageHutterFoam|jet|$fo|jet|dict
 savageHutterFoam|jet|$fo|jet/type|word:impingingJet
 savageHutterFoam|jet|$fo|jet/active|switch:yes
 savageHutterFoam|jet|$fo|jet/centre|vec|onCellCentre=(0.8 0.8 0)!,outside=(20 0 0)!
 savageHutterFoam|jet|$fo|jet/R|num
 savageHutterFoam|jet|$fo|jet/R_imp|num|noCellInside=0.5!
-savageHutterFoam|jet|$fo|jet/u_jet|num
+savageHutterFoam|jet|$fo|jet/u_jet|num|light=3e8!
+savageHutterFoam|jet|$fo|jet/selectionMode|word:all|cellSet=cellSet!
+savageHutterFoam|jetCoeffs|$fo|jet/type|word:impingingJet
+savageHutterFoam|jetCoeffs|$fo|jet/selectionMode|word:all
+savageHutterFoam|jetCoeffs|$fo|jet/impingingJetCoeffs|dict
+savageHutterFoam|jetCoeffs|$fo|jet/impingingJetCoeffs/centre|vec|outside=(20 0 0)!
+savageHutterFoam|jetCoeffs|$fo|jet/impingingJetCoeffs/R|num
+savageHutterFoam|jetCoeffs|$fo|jet/impingingJetCoeffs/R_imp|num
+savageHutterFoam|jetCoeffs|$fo|jet/impingingJetCoeffs/u_jet|num|light=3e8!
+savageHutterFoam|jetConstant|$foc|jet|dict
+savageHutterFoam|jetConstant|$foc|jet/type|word:impingingJet
+savageHutterFoam|jetConstant|$foc|jet/active|switch:yes
+savageHutterFoam|jetConstant|$foc|jet/selectionMode|word:all
+savageHutterFoam|jetConstant|$foc|jet/centre|vec|onCellCentre=(0.8 0.8 0)!
+savageHutterFoam|jetConstant|$foc|jet/R|num
+savageHutterFoam|jetConstant|$foc|jet/R_imp|num
+savageHutterFoam|jetConstant|$foc|jet/u_jet|num
+savageHutterFoam|jetConstant|$foc|.|both
 savageHutterFoam|base|0/h|dimensions|dims
 savageHutterFoam|base|0/h|internalField|sfield
 savageHutterFoam|base|0/h|boundaryField|dict
@@ -268,7 +355,35 @@ savageHutterFoam|zb|0/zb|boundaryField/upslope/type|word:zeroGradient
 savageHutterFoam|zb|0/zb|boundaryField/downslope/type|word:zeroGradient
 savageHutterFoam|zb|0/zb|boundaryField/sides/type|word:zeroGradient
 savageHutterFoam|inflow|0/h|boundaryField/upslope/value|sfield
-savageHutterFoam|inflow|0/U|boundaryField/upslope/value|vfield
+savageHutterFoam|inflow|0/U|boundaryField/upslope/value|vfield|light=uniform (3e8 0 0)!
+savageHutterFoam|restart|0.01/h|.|file
+savageHutterFoam|restart|0.01/h|dimensions|dims
+savageHutterFoam|restart|0.01/h|internalField|sfield
+savageHutterFoam|restart|0.01/h|boundaryField|dict
+savageHutterFoam|restart|0.01/U|.|file
+savageHutterFoam|restart|0.01/U|dimensions|dims
+savageHutterFoam|restart|0.01/U|internalField|vfield
+savageHutterFoam|restart|0.01/U|boundaryField|dict
+savageHutterFoam|restart|0.01/hU|.|file
+savageHutterFoam|restart|0.01/hU|dimensions|dims
+savageHutterFoam|restart|0.01/hU|internalField|vfield
+savageHutterFoam|restart|0.01/hU|boundaryField|dict
+savageHutterFoam|restart|0.01/hMax|.|file
+savageHutterFoam|restart|0.01/hMax|dimensions|dims
+savageHutterFoam|restart|0.01/hMax|internalField|sfield
+savageHutterFoam|restart|0.01/hMax|boundaryField|dict
+savageHutterFoam|restart|0.01/UMax|.|file
+savageHutterFoam|restart|0.01/UMax|dimensions|dims
+savageHutterFoam|restart|0.01/UMax|internalField|sfield
+savageHutterFoam|restart|0.01/UMax|boundaryField|dict
+savageHutterFoam|restart|0.01/uniform/time|.|file
+savageHutterFoam|restart|0.01/uniform/time|value|num|offName=0.0100001!,withinName=0.0100000001
+savageHutterFoam|restart|0.01/uniform/time|name|str
+savageHutterFoam|restart|0.01/uniform/time|index|num
+savageHutterFoam|restart|0.01/uniform/time|deltaT|num
+savageHutterFoam|restart|0.01/uniform/time|deltaT0|num
+savageHutterFoam|restart|0.01/uniform/writeGrid|.|file
+savageHutterFoam|restart|0.01/uniform/writeGrid|origin|num|afterStart=0.015!
 blockMesh|mesh|$bm|nx|count|fraction=1.5,one=1,stale=8!
 blockMesh|mesh|$bm|ny|count
 blockMesh|mesh|$bm|convertToMeters|optnum
@@ -375,7 +490,8 @@ zero|uniform 0
 huge|uniform 1e300
 huge20|uniform 1e20
 misspelt|~
-misspeltValue|uniformm 1"
+misspeltValue|uniformm 1
+wrongSize|nonuniform List<scalar> 3(1 1 1)"
         ;;
     vfield)
         list="missing|-
@@ -386,7 +502,8 @@ zero|uniform (0 0 0)
 huge|uniform (1e300 0 0)
 huge20|uniform (1e20 0 0)
 misspelt|~
-misspeltValue|uniformm (0 0 0)"
+misspeltValue|uniformm (0 0 0)
+wrongSize|nonuniform List<vector> 3((1 0 0) (1 0 0) (1 0 0))"
         ;;
     vec)
         list="missing|-
@@ -409,6 +526,47 @@ huge|(1e300 0)
 huge20|(1e20 0)
 misspelt|~
 wrongSize|(0 0 0)"
+        ;;
+    table)
+        # The table form of a Function1 (x ascending, zeta in degrees)
+        list="missing|-
+empty|table ()!
+one|table ((0 35))
+negative|table ((-12.8 -30) (12.8 -10))
+zero|table ((-12.8 0) (12.8 0))
+unsorted|table ((0 35) (-5 40) (12.8 30))!
+duplicateX|table ((-12.8 40) (0 35) (0 30) (12.8 30))!
+ninety|table ((-12.8 90) (12.8 30))!
+minusNinety|table ((-12.8 30) (12.8 -90))!
+above90|table ((-12.8 40) (12.8 95))!
+above90BetweenCentres|table ((-0.1 0) (0 95) (0.1 0))!
+nan|table ((0 nan))!
+wrongType|table fuzzWord!
+wrongTuple|table ((0 35 1))!
+shortTuple|table ((0))!
+notTuples|table (0 35)!
+huge|table ((0 1e300))!
+huge20|table ((0 1e20))!
+hugeX|table ((1e300 35))
+misspelt|~
+misspeltValue|tabel ((0 35))!"
+        ;;
+    str)
+        list="missing|-
+wrongType|1.5
+otherTime|\"0.02\"
+misspelt|~"
+        ;;
+    file)
+        # A whole file of a start time directory
+        list="missing|-
+empty|empty
+noHeader|noHeader
+wrongClass|wrongClass
+truncated|truncated"
+        ;;
+    both)
+        list="both|both!"
         ;;
     block)
         list="missing|-
@@ -537,24 +695,60 @@ $body"
     printf '%s\n%s\n' 'FoamFile { version 2.0; format ascii; class dictionary; object setAvalancheFieldsDict; }' "$body" > "$file"
 }
 
-#- fvDict <file> <entry> <value>: fvOptions with one entry of the jet changed
+#- fvDict <file> <entry> <value> <form>: fvOptions with one entry of the
+#  jet changed; form direct (the coefficients in the entry) or coeffs (in
+#  its impingingJetCoeffs)
 fvDict()
 {
-    local file="$1" entry="$2" value="$3" body entries
+    local file="$1" entry="$2" value="$3" form="$4" body entries inner
+    local whole="$jetEntries"
+    [ "$form" = coeffs ] && whole="$jetOuter impingingJetCoeffs { $jetCoeffs }"
     case "$entry" in
+    jet/impingingJetCoeffs/*)
+        withEntry "$jetCoeffs" "${entry##*/}" "$value"
+        body="jet { $jetOuter impingingJetCoeffs {$entries } }"
+        ;;
+    jet/impingingJetCoeffs)
+        case "$value" in
+        -) body="jet { $jetOuter }" ;;
+        "~"*) body="jet { $jetOuter ${value#\~} { $jetCoeffs } }" ;;
+        *) body="jet { $jetOuter impingingJetCoeffs $value; }" ;;
+        esac
+        ;;
     jet/*)
-        withEntry "$jetEntries" "${entry#jet/}" "$value"
-        body="jet {$entries }"
+        if [ "$form" = coeffs ]
+        then
+            withEntry "$jetOuter" "${entry#jet/}" "$value"
+            body="jet {$entries impingingJetCoeffs { $jetCoeffs } }"
+        else
+            withEntry "$jetEntries" "${entry#jet/}" "$value"
+            body="jet {$entries }"
+        fi
         ;;
     jet)
         case "$value" in
         -) body="" ;;
-        "~"*) body="${value#\~} { $jetEntries }" ;;
+        "~"*) body="${value#\~} { $whole }" ;;
         *) body="jet $value;" ;;
         esac
         ;;
     esac
     printf '%s\n%s\n' "$fvOptionsHeader" "$body" > "$file"
+}
+
+#- fileVariant <path> <vname>: a whole file of a time directory removed,
+#  emptied, without its header, of another class or cut short
+fileVariant()
+{
+    local f="$1"
+    case "$2" in
+    missing) rm -f "$f" ;;
+    empty) : > "$f" ;;
+    noHeader) echo "fuzzWord" > "$f" ;;
+    wrongClass) sed -i '0,/^ *class /s/^\( *class  *\)[A-Za-z<>]*;/\1volTensorField;/' "$f" ;;
+    truncated) truncate -s $(($(stat -c %s "$f") / 2)) "$f" ;;
+    both) cp "$f" "${f/constant/system}" ;;
+    esac
 }
 
 #- bmDict <file> <entry> <vname> <value>: blockMeshDict with nx, ny,
@@ -603,15 +797,25 @@ bmDict()
     esac
 }
 
-#- makeVariant <case> <file> <entry> <vname> <value>
+#- makeVariant <case> <file> <entry> <vname> <value> <prepared case>
 makeVariant()
 {
-    local d="$1" file="$2" entry="$3" vname="$4" value="$5"
+    local d="$1" file="$2" entry="$3" vname="$4" value="$5" from="$6"
     local key="${entry##*/}" parent=""
     [ "$key" = "$entry" ] || parent="${entry%/*}/"
+    if [ "$entry" = . ]
+    then
+        fileVariant "$d/$file" "$vname"
+        return
+    fi
     case "$file" in
     "$sa") saDict "$d/$file" "$entry" "$value"; return ;;
-    "$fo") fvDict "$d/$file" "$entry" "$value"; return ;;
+    "$fo"|"$foc")
+        local form=direct
+        [ "$from" = jetCoeffs ] && form=coeffs
+        fvDict "$d/$file" "$entry" "$value" "$form"
+        return
+        ;;
     "$bm") bmDict "$d/$file" "$entry" "$vname" "$value"; return ;;
     esac
     case "$value" in
@@ -641,11 +845,15 @@ classify()
 {
     local d="$1" app="$2" log="$3" rc="$4"
     shift 4
-    local written="" t
+    local written="" t keep=""
+    [ -f "$d/.keep" ] && read -r keep < "$d/.keep"
     for t in "$d"/[0-9]*
     do
         [ -d "$t" ] || continue
-        case "${t##*/}" in 0|*orig*) ;; *) written="$written ${t##*/}" ;; esac
+        case "${t##*/}" in
+        0|*orig*|"$keep") ;;
+        *) written="$written ${t##*/}" ;;
+        esac
     done
     written="${written# }"
     local text=""
@@ -750,12 +958,13 @@ runVariant()
         patterns+=("$misspelt")
     fi
     case "$key" in
+    .) patterns=("$d/$file" "$file") ;;
     internalField|value) patterns+=("$d/$file") ;;
     nx|ny) patterns+=(blocks) ;;
     blocks) patterns+=(simpleGrading aligned) ;;
     esac
     [ "$vname" = misspeltValue ] && patterns+=("${value%% *}")
-    if ! makeVariant "$d" "$file" "$entry" "$vname" "$value"
+    if ! makeVariant "$d" "$file" "$entry" "$vname" "$value" "$from"
     then
         echo "BAD cannot make the variant (value '$value')|$value" > "$out"
         return
@@ -865,8 +1074,8 @@ do
     name="$app:$from:$file:$entry:$vname"
     line=""
     [ -f "$work/result.$n" ] && IFS= read -r line < "$work/result.$n"
-    outcome="${line%%|*}"
-    value="${line#*|}"
+    outcome="${line%|*}"
+    value="${line##*|}"
     [ -n "$outcome" ] || outcome="BAD no result"
     what="${outcome#* }"
     [[ $what == *"[blockMesh crashed"* ]] && nCrashedBlockMesh=$((nCrashedBlockMesh + 1))
@@ -908,6 +1117,4 @@ printf '%s' "$table"
 echo
 echo "Variants tried: $nTried   OK: $nOK   REJECTED: $nRejected   BAD: $nBad   KNOWN BAD: $nKnown   ($((SECONDS - start)) s)"
 echo "blockMesh (OpenFOAM's) crashed on $nCrashedBlockMesh of them; the solver then met the mesh of the case before the edit"
-echo
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

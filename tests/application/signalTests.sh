@@ -38,20 +38,10 @@
 # Usage
 #     signalTests.sh <project dir> <work dir>
 #------------------------------------------------------------------------------
-set -u
 project="$1"
 work="$2"
-. "$project/bin/tools/RunFunctions"
-
-passed=0
-failed=0
-pass() { echo "PASS  $*"; passed=$((passed + 1)); }
-fail() { echo "FAIL  $*"; failed=$((failed + 1)); }
+. "$project/tests/application/testFunctions.sh"
 export OMP_NUM_THREADS=1
-
-rm -rf "$work"
-mkdir -p "$work"
-work="$(cd "$work" && pwd)"
 
 #- makeCase <dir> <nx> <ny>: the damBreak tutorial on nx x ny cells, h set
 makeCase()
@@ -67,23 +57,7 @@ makeCase()
     ) > "$1.setup.log" 2>&1
 }
 
-timeDirs()
-{
-    (cd "$1" && ls -d [0-9]* 2>/dev/null | grep -v '^0$' | grep -v orig | sort -g)
-}
-
-#- complete <case> <time>: every field and uniform/time there, each file
-#  ending with the end divider of a finished write
-complete()
-{
-    local f
-    for f in h U hU zb regime hMax UMax uniform/time
-    do
-        tail -n 2 "$1/$2/$f" 2>/dev/null | grep -q '^// \*\*\*' || return 1
-    done
-}
-
-#- allComplete <case>: the time directories that are not complete
+#- incomplete <case>: the time directories that are not complete
 incomplete()
 {
     local t out=""
@@ -92,18 +66,6 @@ incomplete()
         complete "$1" "$t" || out="$out $t"
     done
     echo "$out"
-}
-
-#- waitFor <file> <regex> <seconds>: until the file has a matching line
-waitFor()
-{
-    local i
-    for i in $(seq $(($3 * 10)))
-    do
-        grep -qE "$2" "$1" 2>/dev/null && return 0
-        sleep 0.1
-    done
-    return 1
 }
 
 # -- SIGINT: write the state and end the run -----------------------------------
@@ -272,8 +234,11 @@ fi
 #- watch <case> <stop file> <out>: looks up every time directory present
 #  at its start, and reads its files, again and again until <stop file>
 #  appears; writes "polls missing incomplete" to <out>: missing, a name
-#  not found; incomplete, a directory read twice by name with a file
-#  missing or cut short both times
+#  not found; incomplete, a file missing or cut short in a directory that
+#  stayed in place (the same inode before and after its files were read:
+#  a directory replaced meanwhile, its files removed under the reader,
+#  makes the read inconclusive and it is read again; one gone meanwhile,
+#  as between the fallback's two renames, counts as missing)
 watch()
 {
     python3 - "$1" "$2" "$3" <<'PY' &
@@ -281,28 +246,41 @@ import os, re, sys
 case, stop, out = sys.argv[1:4]
 names = [t for t in os.listdir(case) if re.fullmatch(r"[0-9.e+-]+", t) and t != "0"]
 files = ["h", "U", "hU", "zb", "regime", "hMax", "UMax", os.path.join("uniform", "time")]
+def inode(t):
+    try:
+        return os.stat(os.path.join(case, t)).st_ino
+    except FileNotFoundError:
+        return None
 def whole(t):
+    """True or False for a directory in place all along; "gone" when its
+    name was missing at the end; None when it was replaced meanwhile"""
+    before = inode(t)
+    if before is None:
+        return "gone"
+    ok = True
     for f in files:
         try:
             with open(os.path.join(case, t, f), "rb") as fh:
                 fh.seek(0, 2)
                 fh.seek(max(0, fh.tell() - 200))
                 if b"// ****" not in fh.read():
-                    return False
+                    ok = False
         except FileNotFoundError:
-            return False
-    return True
+            ok = False
+    after = inode(t)
+    if after is None:
+        return "gone"
+    return ok if after == before else None
 polls = missing = incomplete = 0
 while not os.path.exists(stop):
     for t in names:
         polls += 1
-        # The name, in one lookup
-        if not os.path.isdir(os.path.join(case, t)):
+        r = whole(t)
+        while r is None:
+            r = whole(t)
+        if r == "gone":
             missing += 1
-            continue
-        # Its files; a reader inside the old directory when it is replaced
-        # sees it go (its files removed): read it again by name
-        if not whole(t) and not whole(t):
+        elif not r:
             incomplete += 1
 open(out, "w").write("%d %d %d\n" % (polls, missing, incomplete))
 PY
@@ -443,6 +421,4 @@ else
     fail "restore: rc $rc (see $d/log.restore)"
 fi
 
-echo
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

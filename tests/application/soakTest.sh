@@ -21,19 +21,11 @@
 #            the full soak: SH_SOAK_STEPS=100000 ./Alltest, or
 #            tests/application/soakTest.sh . /tmp/soak 100000
 #------------------------------------------------------------------------------
-set -u
 project="$1"
 work="$2"
 steps="${3:-${SH_SOAK_STEPS:-20000}}"
-. "$project/bin/tools/RunFunctions"
+. "$project/tests/application/testFunctions.sh"
 
-passed=0
-failed=0
-pass() { echo "PASS  $*"; passed=$((passed + 1)); }
-fail() { echo "FAIL  $*"; failed=$((failed + 1)); }
-
-rm -rf "$work"
-mkdir -p "$work"
 d="$work/closedBox"
 mkdir "$d"
 cp -r "$project"/tutorials/damBreak/{0.orig,constant,system} "$d"/
@@ -124,6 +116,4 @@ else
     fail "memory: VmRSS ${rssFirst:-?} kB after the first write, ${rssLast:-?} kB at the end (max $rssMax kB)"
 fi
 
-echo
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

@@ -80,12 +80,17 @@ sideCondition classify
                     << exit(FatalIOError);
             }
             const vector& u = Up[facei];
-            if (!(mag(u.x()) <= big && mag(u.y()) <= big && mag(u.z()) <= big))
+            if
+            (
+                !(mag(u.x()) <= big && mag(u.y()) <= big && mag(u.z()) <= big)
+             || !(mag(u) <= maxInputSpeed)
+            )
             {
                 FatalIOErrorInFunction(U.objectPath())
                     << "Patch " << c.patch << ": inflow velocity U = " << u
-                    << " at face " << facei << " must be finite, components"
-                    << " of magnitude at most 1e30" << nl
+                    << " at face " << facei << " must be finite, of"
+                    << " magnitude at most " << label(maxInputSpeed)
+                    << " m/s (the speed of light)" << nl
                     << exit(FatalIOError);
             }
         }

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "caseInput.H"
+#include "boundaryConditions.H"
 #include "Switch.H"
 #include "unitConversion.H"
 
@@ -114,7 +115,24 @@ caseInput::caseInput(const fvMesh& mesh)
             << "    inclination table ((0 35) (17.5 35) (21.5 0) (30 0));"
             << nl << exit(FatalIOError);
     }
-    inclination = Function1<scalar>::New("inclination", tp);
+    {
+        // Function1's own errors (an empty or unsorted table: "out-of-order
+        // value") name neither the file nor the keyword
+        const bool ioThrows = FatalIOError.throwExceptions();
+        const bool throws = FatalError.throwExceptions();
+        try
+        {
+            inclination = Function1<scalar>::New("inclination", tp);
+        }
+        catch (const error& e)
+        {
+            FatalIOError.throwExceptions(ioThrows);
+            FatalError.throwExceptions(throws);
+            failInclination(e);
+        }
+        FatalIOError.throwExceptions(ioThrows);
+        FatalError.throwExceptions(throws);
+    }
 
     model.earthPressure = sh::parseEarthPressure
     (
@@ -317,12 +335,37 @@ void caseInput::readSources()
                 << exit(FatalIOError);
         }
         // As fvOptions: coefficients in <type>Coeffs or in the entry
-        const dictionary& c = src.optionalSubDict(type + "Coeffs");
+        const word coeffsName = type + "Coeffs";
+        const entry* ce = src.findEntry(coeffsName, keyType::LITERAL);
+        if (ce && !ce->isDict())
+        {
+            FatalIOErrorInFunction(src)
+                << coeffsName << " of " << e.keyword() << " is not a"
+                << " sub-dictionary." << nl << "Valid forms: the"
+                << " coefficients in " << coeffsName << " { ... } or in "
+                << e.keyword() << " itself" << nl << exit(FatalIOError);
+        }
+        const dictionary& c = src.optionalSubDict(coeffsName);
+        // fvOptions' cell selection: the jet selects the cells within
+        // R_imp of its centre itself
+        if (src.found("selectionMode", keyType::LITERAL))
+        {
+            const word mode = src.get<word>("selectionMode");
+            if (mode != "all")
+            {
+                FatalIOErrorInFunction(src)
+                    << "Invalid selectionMode " << mode << " of "
+                    << e.keyword() << ": the impinging jet imposes its"
+                    << " state on the cells within R_imp of its centre."
+                    << nl << "Valid choices: (all)" << nl
+                    << exit(FatalIOError);
+            }
+        }
         const wordList entryKeywords({"type", "active", "selectionMode"});
         for (const word& key : src.toc())
         {
             const bool ok =
-                entryKeywords.found(key) || key == type + "Coeffs"
+                entryKeywords.found(key) || key == coeffsName
              || (&c == &src && jetKeywords.found(key));
             if (!ok)
             {
@@ -348,6 +391,18 @@ void caseInput::readSources()
                 }
             }
         }
+        for (const word& key : jetKeywords)
+        {
+            if (!c.found(key, keyType::LITERAL))
+            {
+                FatalIOErrorInFunction(c)
+                    << "Missing keyword '" << key << "' of " << e.keyword()
+                    << " (" << type << ")." << nl << "The coefficients "
+                    << flatOutput(jetKeywords) << " go directly in "
+                    << e.keyword() << " or in its " << coeffsName
+                    << " { ... }" << nl << exit(FatalIOError);
+            }
+        }
         jetDict_ = &c;
         const vector centre = c.get<vector>("centre");
         jet.xc = centre.x();
@@ -355,7 +410,14 @@ void caseInput::readSources()
         jet.R = c.get<scalar>("R");
         jet.rImp = c.get<scalar>("R_imp");
         jet.uJet = c.get<scalar>("u_jet");
-        jet.zeta = degToRad(inclination->value(jet.xc));
+        if (!(jet.uJet <= maxInputSpeed))
+        {
+            FatalIOErrorInFunction(c)
+                << "u_jet " << jet.uJet << ": the jet's speed must be at"
+                << " most " << label(maxInputSpeed)
+                << " m/s (the speed of light)" << nl << exit(FatalIOError);
+        }
+        jet.zeta = degToRad(inclinationAt(jet.xc));
         hasJet = true;
         Info<< "    " << e.keyword() << ": impingingJet at " << centre
             << ", R " << jet.R << ", R_imp " << jet.rImp << ", u_jet "
@@ -384,6 +446,47 @@ const dictionary& caseInput::dictOf(const std::string& keyword) const
         return mesh_.time().controlDict();
     }
     return transportProperties_;
+}
+
+
+scalar caseInput::inclinationAt(const scalar x) const
+{
+    const bool ioThrows = FatalIOError.throwExceptions();
+    const bool throws = FatalError.throwExceptions();
+    scalar zeta = 0;
+    try
+    {
+        zeta = inclination->value(x);
+    }
+    catch (const error& e)
+    {
+        FatalIOError.throwExceptions(ioThrows);
+        FatalError.throwExceptions(throws);
+        failInclination(e);
+    }
+    FatalIOError.throwExceptions(ioThrows);
+    FatalError.throwExceptions(throws);
+    if (!(mag(zeta) < 90))
+    {
+        FatalIOErrorInFunction(transportProperties_)
+            << "Invalid inclination: zeta(x = " << x << ") = " << zeta
+            << " deg: the inclination must lie in (-90, 90) degrees" << nl
+            << exit(FatalIOError);
+    }
+    return zeta;
+}
+
+
+void caseInput::failInclination(const error& e) const
+{
+    FatalIOErrorInFunction(transportProperties_)
+        << "Invalid inclination: " << e.message().c_str() << nl
+        << "Valid: a Function1 of x giving zeta in degrees, in (-90, 90)"
+        << " over the mesh, e.g." << nl
+        << "    inclination constant 35;" << nl
+        << "    inclination table ((0 35) (17.5 35) (21.5 0) (30 0));"
+        << "  (x strictly ascending)" << nl << exit(FatalIOError);
+    std::abort();
 }
 
 

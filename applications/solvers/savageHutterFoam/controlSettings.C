@@ -83,7 +83,7 @@ scalar number
     const word& key,
     const range& r,
     const scalar* deflt,
-    const char* meaning
+    const std::string& meaning
 )
 {
     const entry* e = cd.findEntry(key, keyType::LITERAL);
@@ -94,7 +94,8 @@ scalar number
             return *deflt;
         }
         FatalIOErrorInFunction(cd)
-            << "Missing keyword '" << key << "' (" << meaning << ")." << nl
+            << "Missing keyword '" << key << "' (" << meaning.c_str() << ")."
+            << nl
             << "Valid values: " << r.str().c_str() << nl
             << exit(FatalIOError);
     }
@@ -113,8 +114,8 @@ scalar number
     {
         FatalIOErrorInFunction(cd)
             << "Invalid " << key << " " << asWritten(*e).c_str()
-            << " at line " << e->startLineNumber() << " (" << meaning
-            << ")." << nl
+            << " at line " << e->startLineNumber() << " ("
+            << meaning.c_str() << ")." << nl
             << "Valid values: " << r.str().c_str() << nl
             << exit(FatalIOError);
     }
@@ -255,15 +256,31 @@ controlSettings controlSettings::read
         {"adjustableRunTime", "runTime", "timeStep", "clockTime", "cpuTime"},
         word::null
     );
+    // timeStep: a whole number of steps that OpenFOAM's label (32 bits)
+    // holds: Time writes when timeIndex % label(writeInterval) is 0, and
+    // beyond labelMax the conversion is undefined (here it gave a write
+    // every step).  clockTime, cpuTime: at least a second, since Time
+    // counts write times as label(elapsed seconds/writeInterval), which
+    // overflows after labelMax intervals (68 years at 1 s, 25 days at
+    // 1 ms); a shorter interval also writes a directory nearly every step
+    const bool wall =
+        c.writeControl == "clockTime" || c.writeControl == "cpuTime";
     c.writeInterval = number
     (
         cd, "writeInterval",
         c.writeControl == "timeStep"
-      ? range{1, inf, false, true, true} : positive,
+      ? range{1, scalar(labelMax), false, false, true}
+      : wall ? range{1, inf, false, true, false} : positive,
         nullptr,
         c.writeControl == "timeStep"
-      ? "time steps between writes with writeControl timeStep"
-      : "time between writes"
+      ? std::string("time steps between writes with writeControl timeStep,"
+        " a label")
+      : wall
+      ? "seconds of wall or CPU time between writes with writeControl "
+        + c.writeControl + ": OpenFOAM's Time counts them as the 32-bit"
+        " label elapsed/writeInterval, and below 1 s a directory would be"
+        " written nearly every step"
+      : std::string("time between writes")
     );
     c.purgeWrite = label
     (

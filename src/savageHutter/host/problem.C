@@ -79,23 +79,31 @@ Problem<Real>::Problem
 template<class Real>
 void Problem<Real>::setInclination(const std::function<double(double)>& z)
 {
+    const double pi = 3.14159265358979323846;
     const double dx = grid.dx;
-    for (int i = 0; i < grid.nx; ++i)
+    // zeta at the cell centres and, for the curvature, at the faces: a
+    // table may pass 90 degrees between two centres
+    const auto angle = [&z, pi](double x)
     {
-        const double x = double(grid.x0) + (i + 0.5)*dx;
         const double zx = z(x);
-        if (!(std::fabs(zx) < 0.5*3.14159265358979323846))
+        if (!(std::fabs(zx) < 0.5*pi))
         {
             throw InputError
             (
                 "inclination",
-                "zeta(x = " + std::to_string(x) + ") = "
-              + std::to_string(zx*180/3.14159265358979323846)
+                "zeta(x = " + numberString(x) + ") = "
+              + numberString(zx*180/pi)
               + " deg: the inclination must lie in (-90, 90) degrees"
             );
         }
+        return zx;
+    };
+    for (int i = 0; i < grid.nx; ++i)
+    {
+        const double x = double(grid.x0) + (i + 0.5)*dx;
+        const double zx = angle(x);
         zeta[i] = Real(zx);
-        kappa[i] = Real(-(z(x + 0.5*dx) - z(x - 0.5*dx))/dx);
+        kappa[i] = Real(-(angle(x + 0.5*dx) - angle(x - 0.5*dx))/dx);
     }
 }
 
