@@ -733,7 +733,7 @@ then
     do
         python3 -c "import sys; sys.exit(not $t > $stopDir)" || continue
         compared="$compared $t"
-        for f in h U hU regime hMax UMax
+        for f in h U hU regime hMax UMax tArrival
         do
             cmp -s "$ref/$t/$f" "$sig/$t/$f" || { same=false; echo "      $t/$f differs"; }
         done

@@ -115,7 +115,7 @@ rc=$?
 final="$(timeDirs | tail -n1)"
 differ=""
 compared=0
-for f in h U hU regime hMax UMax; do
+for f in h U hU regime hMax UMax tArrival; do
     if cmp -s "$final/$f" "$d.ref/$final/$f"; then
         compared=$((compared + $(stat -c %s "$final/$f")))
     else
@@ -123,7 +123,7 @@ for f in h U hU regime hMax UMax; do
     fi
 done
 if [ "$rc" -eq 0 ] && [ -n "$final" ] && [ -z "$differ" ]; then
-    pass "SIGTERM at $last, restart to $final: h U hU regime hMax UMax identical byte for byte to a run 0 -> $final without a stop ($compared bytes)"
+    pass "SIGTERM at $last, restart to $final: h U hU regime hMax UMax tArrival identical byte for byte to a run 0 -> $final without a stop ($compared bytes)"
 else
     fail "SIGTERM at $last, restart to '$final': differs from a run without a stop in:${differ:- (reference run exit $rc)}"
     tail -n 20 "$d.ref/log.savageHutterFoam"

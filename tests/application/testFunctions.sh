@@ -46,7 +46,7 @@ timeDirs()
 complete()
 {
     local f
-    for f in h U hU zb regime hMax UMax uniform/time
+    for f in h U hU zb regime hMax UMax tArrival uniform/time
     do
         tail -n 2 "$1/$2/$f" 2>/dev/null | grep -q '^// \*\*\*' || return 1
     done
