@@ -46,8 +46,9 @@
 #                  internalField, boundaryField;
 #       inflow     fixedValue inflow on the upslope side: the value of h
 #                  and U there;
-#       restart    a run to 0.01 restarted from latestTime to 0.02: in
-#                  0.01/ the files h, U, hU, hMax, UMax (each whole, and
+#       restart    a run to 0.01 (rho 1500) restarted from latestTime to
+#                  0.02 (and its arrivalThreshold): in 0.01/ the files h,
+#                  U, hU, hMax, UMax, pMax, tArrival (each whole, and
 #                  its dimensions, internalField, boundaryField),
 #                  uniform/time (whole, value, name, index, deltaT,
 #                  deltaT0) and uniform/writeGrid (whole, origin);
@@ -211,9 +212,11 @@ runs()
     # the time directories that are no output of a variant
     d="$work/restart"; cp -r "$b" "$d"
     setEntry "$d/$cd_" endTime 0.01
+    setEntry "$d/$tp" rho 1500
     runs "$d"
     (cd "$d" && savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1)
     [ -f "$d/0.01/hU" ] && [ -f "$d/0.01/uniform/writeGrid" ] \
+        && [ -f "$d/0.01/pMax" ] && [ -f "$d/0.01/tArrival" ] \
         || { echo "set-up: $d wrote no 0.01"; exit 1; }
     rm -rf "$d"/log.* "$d/postProcessing"
     setEntry "$d/$cd_" endTime 0.02
@@ -261,6 +264,7 @@ savageHutterFoam|base|$tp|frictionModel|word:Coulomb
 savageHutterFoam|base|$tp|CoulombCoeffs|dict
 savageHutterFoam|base|$tp|CoulombCoeffs/delta|num
 savageHutterFoam|base|$tp|rho|optnum
+savageHutterFoam|base|$tp|arrivalThreshold|optnum
 savageHutterFoam|voellmy|$tp|VoellmyCoeffs|dict
 savageHutterFoam|voellmy|$tp|VoellmyCoeffs/mu|num
 savageHutterFoam|voellmy|$tp|VoellmyCoeffs/xi|num
@@ -376,6 +380,15 @@ savageHutterFoam|restart|0.01/UMax|.|file
 savageHutterFoam|restart|0.01/UMax|dimensions|dims
 savageHutterFoam|restart|0.01/UMax|internalField|sfield
 savageHutterFoam|restart|0.01/UMax|boundaryField|dict
+savageHutterFoam|restart|0.01/pMax|.|file
+savageHutterFoam|restart|0.01/pMax|dimensions|dims
+savageHutterFoam|restart|0.01/pMax|internalField|sfield
+savageHutterFoam|restart|0.01/pMax|boundaryField|dict
+savageHutterFoam|restart|0.01/tArrival|.|file
+savageHutterFoam|restart|0.01/tArrival|dimensions|dims
+savageHutterFoam|restart|0.01/tArrival|internalField|sfield
+savageHutterFoam|restart|0.01/tArrival|boundaryField|dict
+savageHutterFoam|restart|$tp|arrivalThreshold|optnum
 savageHutterFoam|restart|0.01/uniform/time|.|file
 savageHutterFoam|restart|0.01/uniform/time|value|num|offName=0.0100001!,withinName=0.0100000001
 savageHutterFoam|restart|0.01/uniform/time|name|str

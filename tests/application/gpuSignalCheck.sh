@@ -39,6 +39,7 @@ setBlockCells 4096 512
 setEntry system/controlDict endTime 1000
 setEntry system/controlDict writeInterval 1000
 setEntry system/controlDict writeFormat binary
+setEntry constant/transportProperties rho 1500   # pMax written and restarted
 runApplication blockMesh
 restore0Dir
 [ -f system/setAvalancheFieldsDict ] && runApplication setAvalancheFields
@@ -115,7 +116,7 @@ rc=$?
 final="$(timeDirs | tail -n1)"
 differ=""
 compared=0
-for f in h U hU regime hMax UMax tArrival; do
+for f in h U hU regime hMax UMax pMax tArrival; do
     if cmp -s "$final/$f" "$d.ref/$final/$f"; then
         compared=$((compared + $(stat -c %s "$final/$f")))
     else
@@ -123,7 +124,7 @@ for f in h U hU regime hMax UMax tArrival; do
     fi
 done
 if [ "$rc" -eq 0 ] && [ -n "$final" ] && [ -z "$differ" ]; then
-    pass "SIGTERM at $last, restart to $final: h U hU regime hMax UMax tArrival identical byte for byte to a run 0 -> $final without a stop ($compared bytes)"
+    pass "SIGTERM at $last, restart to $final: h U hU regime hMax UMax pMax tArrival identical byte for byte to a run 0 -> $final without a stop ($compared bytes)"
 else
     fail "SIGTERM at $last, restart to '$final': differs from a run without a stop in:${differ:- (reference run exit $rc)}"
     tail -n 20 "$d.ref/log.savageHutterFoam"

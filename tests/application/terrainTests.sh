@@ -293,7 +293,7 @@ def say(good, msg):
 dem = json.loads(subprocess.run(["gdalinfo", "-json", f"{case}/constant/plane.asc"],
                                 capture_output=True, text=True).stdout)
 log = open(f"{case}/log.hazardMaps").read()
-for name in ["hMax", "UMax", "pMax", "deposit"]:
+for name in ["hMax", "UMax", "pMax", "deposit", "tArrival"]:
     for ext in [".asc", ".tif"]:
         r = subprocess.run(["gdalinfo", "-json", "-stats", f"{out}/{name}{ext}"],
                            capture_output=True, text=True)
