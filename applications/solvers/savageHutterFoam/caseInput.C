@@ -58,6 +58,29 @@ const wordList transportKeywords
     "frictionModel", "rho", "arrivalThreshold"
 });
 
+//- Calls f with OpenFOAM's fatal errors thrown as exceptions (the throw
+//  modes restored after), an error caught going to onError (which must
+//  not return): Function1's own errors name neither the file nor the
+//  keyword
+template<class F, class OnError>
+void catchFatalErrors(const F& f, const OnError& onError)
+{
+    const bool ioThrows = FatalIOError.throwExceptions();
+    const bool throws = FatalError.throwExceptions();
+    try
+    {
+        f();
+    }
+    catch (const error& e)
+    {
+        FatalIOError.throwExceptions(ioThrows);
+        FatalError.throwExceptions(throws);
+        onError(e);
+    }
+    FatalIOError.throwExceptions(ioThrows);
+    FatalError.throwExceptions(throws);
+}
+
 } // namespace
 
 
@@ -115,24 +138,12 @@ caseInput::caseInput(const fvMesh& mesh)
             << "    inclination table ((0 35) (17.5 35) (21.5 0) (30 0));"
             << nl << exit(FatalIOError);
     }
-    {
-        // Function1's own errors (an empty or unsorted table: "out-of-order
-        // value") name neither the file nor the keyword
-        const bool ioThrows = FatalIOError.throwExceptions();
-        const bool throws = FatalError.throwExceptions();
-        try
-        {
-            inclination = Function1<scalar>::New("inclination", tp);
-        }
-        catch (const error& e)
-        {
-            FatalIOError.throwExceptions(ioThrows);
-            FatalError.throwExceptions(throws);
-            failInclination(e);
-        }
-        FatalIOError.throwExceptions(ioThrows);
-        FatalError.throwExceptions(throws);
-    }
+    // An empty or unsorted table: Function1's "out-of-order value"
+    catchFatalErrors
+    (
+        [&]() { inclination = Function1<scalar>::New("inclination", tp); },
+        [this](const error& e) { failInclination(e); }
+    );
 
     model.earthPressure = sh::parseEarthPressure
     (
@@ -451,21 +462,12 @@ const dictionary& caseInput::dictOf(const std::string& keyword) const
 
 scalar caseInput::inclinationAt(const scalar x) const
 {
-    const bool ioThrows = FatalIOError.throwExceptions();
-    const bool throws = FatalError.throwExceptions();
     scalar zeta = 0;
-    try
-    {
-        zeta = inclination->value(x);
-    }
-    catch (const error& e)
-    {
-        FatalIOError.throwExceptions(ioThrows);
-        FatalError.throwExceptions(throws);
-        failInclination(e);
-    }
-    FatalIOError.throwExceptions(ioThrows);
-    FatalError.throwExceptions(throws);
+    catchFatalErrors
+    (
+        [&]() { zeta = inclination->value(x); },
+        [this](const error& e) { failInclination(e); }
+    );
     if (!(mag(zeta) < 90))
     {
         FatalIOErrorInFunction(transportProperties_)
