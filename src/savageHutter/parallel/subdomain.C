@@ -1,0 +1,140 @@
+#include "halo.H"
+
+#include <stdexcept>
+#include <string>
+
+namespace sh
+{
+
+namespace
+{
+
+//- Start of part a of n cells cut into p parts, the first n mod p one
+//  cell larger
+int partStart(int n, int p, int a)
+{
+    const int base = n/p;
+    const int extra = n%p;
+    return a*base + (a < extra ? a : extra);
+}
+
+} // namespace
+
+
+Subdomain splitGrid(int nx, int ny, int px, int py, int rank)
+{
+    if (px < 1 || py < 1 || rank < 0 || rank >= px*py)
+    {
+        throw std::invalid_argument
+        (
+            "splitGrid: rank " + std::to_string(rank) + " of a "
+          + std::to_string(px) + " x " + std::to_string(py) + " split"
+        );
+    }
+    if (nx/px < Grid<double>::ng || ny/py < Grid<double>::ng)
+    {
+        throw std::invalid_argument
+        (
+            "splitGrid: " + std::to_string(nx) + " x " + std::to_string(ny)
+          + " cells cut into " + std::to_string(px) + " x "
+          + std::to_string(py) + " parts leaves a part narrower than the "
+          + std::to_string(Grid<double>::ng) + " ghost layers"
+        );
+    }
+    const int a = rank%px;
+    const int b = rank/px;
+    Subdomain s;
+    s.nxWhole = nx;
+    s.nyWhole = ny;
+    s.i0 = partStart(nx, px, a);
+    s.j0 = partStart(ny, py, b);
+    s.nx = partStart(nx, px, a + 1) - s.i0;
+    s.ny = partStart(ny, py, b + 1) - s.j0;
+    s.neighbour[xMin] = a > 0 ? rank - 1 : -1;
+    s.neighbour[xMax] = a < px - 1 ? rank + 1 : -1;
+    s.neighbour[yMin] = b > 0 ? rank - px : -1;
+    s.neighbour[yMax] = b < py - 1 ? rank + px : -1;
+    return s;
+}
+
+
+template<class Real>
+Problem<Real> subProblem(const Problem<Real>& whole, const Subdomain& s)
+{
+    const Grid<Real>& G = whole.grid;
+    if
+    (
+        s.nxWhole != G.nx || s.nyWhole != G.ny || G.i0 != 0 || G.j0 != 0
+     || s.nx < Grid<Real>::ng || s.ny < Grid<Real>::ng
+     || s.i0 < 0 || s.j0 < 0 || s.i0 + s.nx > G.nx || s.j0 + s.ny > G.ny
+    )
+    {
+        throw std::invalid_argument
+        (
+            "subProblem: subdomain of " + std::to_string(s.nx) + " x "
+          + std::to_string(s.ny) + " cells at (" + std::to_string(s.i0)
+          + ", " + std::to_string(s.j0) + ") does not fit a whole grid of "
+          + std::to_string(G.nx) + " x " + std::to_string(G.ny) + " cells"
+        );
+    }
+    Problem<Real> p = whole;
+    p.grid.nx = s.nx;
+    p.grid.ny = s.ny;
+    p.grid.i0 = s.i0;
+    p.grid.j0 = s.j0;
+    for (int side = 0; side < 4; ++side)
+    {
+        if (s.processorSide(side))
+        {
+            p.bc.type[side] = BCType::processor;
+            p.bc.inflow[side] = State<Real>{};
+        }
+    }
+
+    p.zeta.assign(whole.zeta.begin() + s.i0, whole.zeta.begin() + s.i0 + s.nx);
+    p.kappa.assign
+    (
+        whole.kappa.begin() + s.i0, whole.kappa.begin() + s.i0 + s.nx
+    );
+    const auto cut = [&](const auto& w, auto& out)
+    {
+        out.resize(std::size_t(s.nx)*s.ny);
+        for (int j = 0; j < s.ny; ++j)
+        {
+            for (int i = 0; i < s.nx; ++i)
+            {
+                out[i + std::size_t(j)*s.nx] =
+                    w[(s.i0 + i) + std::size_t(s.j0 + j)*G.nx];
+            }
+        }
+    };
+    cut(whole.zb, p.zb);
+    cut(whole.h, p.h);
+    cut(whole.hu, p.hu);
+    cut(whole.hv, p.hv);
+    const auto cutIfGiven = [&](const auto& w, auto& out)
+    {
+        if (!w.empty())
+        {
+            cut(w, out);
+        }
+    };
+    cutIfGiven(whole.peaks.h, p.peaks.h);
+    cutIfGiven(whole.peaks.speed, p.peaks.speed);
+    cutIfGiven(whole.peaks.pressure, p.peaks.pressure);
+    cutIfGiven(whole.peaks.arrival, p.peaks.arrival);
+
+    // The jet's first test in local indices (an empty range where its
+    // cells lie elsewhere is harmless: the circle test decides)
+    JetParams<Real>& jet = p.params.jet;
+    jet.iMin -= s.i0;
+    jet.iMax -= s.i0;
+    jet.jMin -= s.j0;
+    jet.jMax -= s.j0;
+    return p;
+}
+
+template Problem<double> subProblem(const Problem<double>&, const Subdomain&);
+template Problem<float> subProblem(const Problem<float>&, const Subdomain&);
+
+} // namespace sh
