@@ -72,7 +72,7 @@ cp "$project"/tutorials/inclinedPlane/constant/transportProperties \
     setEntry system/controlDict endTime 1
     setEntry system/controlDict writeInterval 0.5
     setEntry system/controlDict writeFormat ascii
-)
+) || fail "base case: setEntry on its controlDict or transportProperties failed"
 
 # DEMs: plane (35 deg down X), tilted (and 10 deg up Y), hole (nodata under
 # the mesh), each .asc with full precision; .tif through gdal_translate
@@ -95,9 +95,11 @@ write("tilted", lambda X, Y: plane(X, Y) + b*(Y - 5080))
 write("hole", lambda X, Y: -9999 if abs(X - 1100) < 6 and abs(Y - 5090) < 6
       else plane(X, Y))
 PYEOF
+[ $? -eq 0 ] || fail "writing the DEMs plane.asc, tilted.asc, hole.asc"
 gdal_translate -q --config AAIGRID_DATATYPE Float64 -ot Float64 "$work/dem/plane.asc" "$work/dem/plane.tif" \
     || fail "gdal_translate plane.asc plane.tif"
-cp "$work/dem"/*.asc "$work/dem"/*.tif "$work/base/constant/"
+cp "$work/dem"/*.asc "$work/dem"/*.tif "$work/base/constant/" \
+    || fail "copying the DEMs into the base case"
 
 # terrainDict of the base case; release r1 a rotated quadrilateral (plan
 # area 800 m^2; one vertex on an edge), r2 a triangle (600 m^2)
@@ -351,7 +353,11 @@ expectRefusal()
     local c
     c="$(newCase "bad-${name// /-}")"
     [ "$edit" = - ] || sed -i "$edit" "$c/system/terrainDict"
-    [ $# -ge 4 ] && (cd "$c" && eval "$4")
+    if [ $# -ge 4 ] && ! (cd "$c" && eval "$4")
+    then
+        fail "$name: the set-up command failed: $4"
+        return
+    fi
     local before after
     before="$(snapshot "$c")"
     (cd "$c" && terrainToCase > log.terrainToCase 2>&1)
@@ -451,6 +457,7 @@ with open(f"{out}/degenerate.vrt", "w") as o:
     o.write(open(f"{out}/rplane.vrt").read().replace(
         ", ".join("%.17g" % g for g in gt), "1000, 2, 0, 5000, 0, 0"))
 PYEOF
+[ $? -eq 0 ] || fail "writing this section's rasters (rel.asc, utm.asc, rplane.vrt, ...)"
 (
     cd "$work/base/constant" || exit 1
     t="gdal_translate -q --config AAIGRID_DATATYPE Float64 -ot Float64"
@@ -533,38 +540,47 @@ PYEOF
 }
 
 #- runCase <name> <terrainDict edit: a command run in the case>: a copy of
-#  base, edited, through terrainToCase; prints the case directory
+#  base, edited, through terrainToCase; sets c to the case directory, and
+#  on a failure (a FAIL) returns 1.  Called in this shell, not in $(...),
+#  so that the FAIL is counted
 runCase()
 {
-    local c
-    c="$(newCase "$1")"
+    c="$work/$1"
+    newCase "$1" > /dev/null
     (cd "$c" && eval "$2" && runApplication terrainToCase > /dev/null) \
-        || { fail "$1: terrainToCase failed (see $c/log.terrainToCase)"; }
-    echo "$c"
+        && return 0
+    fail "$1: edit or terrainToCase failed (see $c/log.terrainToCase)"
+    return 1
 }
 
 # Release rasters: the ramp on its own grid, vertical and normal; the
 # uniform raster, wider than the mesh
 relVolume="$(cat "$work/base/constant/rel.volume")"
 cellArea=25
-c="$(runCase raster-vertical "setR1 . 'raster \"constant/rel.asc\";'; sed -i 's/thicknessDirection normal/thicknessDirection vertical/' system/terrainDict")"
-volumeCheck "$c" r1 "$relVolume" "$cellArea*1.1" "release raster (3 m pixels, ramp 0.5 to 1.1 m), vertical"
-volumeCheck "$c" r1 "$relVolume" "1e-7*$relVolume" "release raster, vertical, exact on a plane DEM" "the log's 8 digits"
-c="$(runCase raster-normal "setR1 . 'raster \"constant/rel.asc\";'")"
-volumeCheck "$c" r1 "$relVolume/$cos35" "$cellArea*1.1" "release raster, normal (sum d A / cos 35)"
-volumeCheck "$c" r1 "$relVolume/$cos35" "1e-7*$relVolume/$cos35" "release raster, normal, exact on a plane DEM" "the log's 8 digits"
-c="$(runCase raster-uniform "setR1 . 'raster \"constant/uniform.asc\";'; sed -i '/^    r2/,/^    }/d' system/terrainDict")"
-if msg="$(fieldCheck "$c" '(lambda h: (max(abs(v - 1.5) for v in h) < 1e-9, "h in [%.15g, %.15g] m over %d cells" % (min(h), max(h), len(h))))(field("h"))')"
+if runCase raster-vertical "setR1 . 'raster \"constant/rel.asc\";'; sed -i 's/thicknessDirection normal/thicknessDirection vertical/' system/terrainDict"
 then
-    pass "uniform release raster of 1.5 m (7 m pixels) over the whole mesh and beyond: $msg"
-else
-    fail "uniform release raster of 1.5 m over the whole mesh: $msg"
+    volumeCheck "$c" r1 "$relVolume" "$cellArea*1.1" "release raster (3 m pixels, ramp 0.5 to 1.1 m), vertical"
+    volumeCheck "$c" r1 "$relVolume" "1e-7*$relVolume" "release raster, vertical, exact on a plane DEM" "the log's 8 digits"
 fi
-if grep -q "reach outside the mesh" "$c/log.terrainToCase"
+if runCase raster-normal "setR1 . 'raster \"constant/rel.asc\";'"
 then
-    pass "uniform release raster beyond the mesh: warned ($(grep -o '[0-9]* of the [0-9]* pixels.*' "$c/log.terrainToCase" | head -n1 | cut -c1-80)...)"
-else
-    fail "uniform release raster beyond the mesh: no warning"
+    volumeCheck "$c" r1 "$relVolume/$cos35" "$cellArea*1.1" "release raster, normal (sum d A / cos 35)"
+    volumeCheck "$c" r1 "$relVolume/$cos35" "1e-7*$relVolume/$cos35" "release raster, normal, exact on a plane DEM" "the log's 8 digits"
+fi
+if runCase raster-uniform "setR1 . 'raster \"constant/uniform.asc\";'; sed -i '/^    r2/,/^    }/d' system/terrainDict"
+then
+    if msg="$(fieldCheck "$c" '(lambda h: (max(abs(v - 1.5) for v in h) < 1e-9, "h in [%.15g, %.15g] m over %d cells" % (min(h), max(h), len(h))))(field("h"))')"
+    then
+        pass "uniform release raster of 1.5 m (7 m pixels) over the whole mesh and beyond: $msg"
+    else
+        fail "uniform release raster of 1.5 m over the whole mesh: $msg"
+    fi
+    if grep -q "reach outside the mesh" "$c/log.terrainToCase"
+    then
+        pass "uniform release raster beyond the mesh: warned ($(grep -o '[0-9]* of the [0-9]* pixels.*' "$c/log.terrainToCase" | head -n1 | cut -c1-80)...)"
+    else
+        fail "uniform release raster beyond the mesh: no warning"
+    fi
 fi
 
 # Coordinate reference systems: r1 in the UTM DEM's coordinates in the
@@ -613,20 +629,24 @@ else
 fi
 
 # Rotated DEMs: the plane and the tilted plane on a grid rotated by 30 deg
-c="$(runCase rotated "sed -i 's#constant/plane.asc#constant/rplane.tif#' system/terrainDict")"
-if msg="$(fieldCheck "$c" '(max(abs(z - 35) for z in zeta) < 1e-9 and max(map(abs, zb)) < 1e-9, "max |zeta - 35| = %.3g deg, max |zb| = %.3g m" % (max(abs(z - 35) for z in zeta), max(map(abs, zb))))')"
+if runCase rotated "sed -i 's#constant/plane.asc#constant/rplane.tif#' system/terrainDict"
 then
-    pass "plane DEM on a grid rotated by 30 deg: $msg"
-else
-    fail "plane DEM on a grid rotated by 30 deg: $msg"
+    if msg="$(fieldCheck "$c" '(max(abs(z - 35) for z in zeta) < 1e-9 and max(map(abs, zb)) < 1e-9, "max |zeta - 35| = %.3g deg, max |zb| = %.3g m" % (max(abs(z - 35) for z in zeta), max(map(abs, zb))))')"
+    then
+        pass "plane DEM on a grid rotated by 30 deg: $msg"
+    else
+        fail "plane DEM on a grid rotated by 30 deg: $msg"
+    fi
+    compareH "$c" "$work/plane" 1e-9 "plane DEM on a rotated grid: 0/h that of the north-up DEM"
 fi
-compareH "$c" "$work/plane" 1e-9 "plane DEM on a rotated grid: 0/h that of the north-up DEM"
-c="$(runCase rotated-tilted "sed -i 's#constant/plane.asc#constant/rtilted.tif#' system/terrainDict")"
-if msg="$(fieldCheck "$c" '(lambda e: (e < 1e-9, "max |zb - y tan10 cos35| = %.3g m" % e))(max(abs(zb[k] - y[k]*math.tan(math.radians(10))*math.cos(math.radians(35))) for k in range(len(zb))))')"
+if runCase rotated-tilted "sed -i 's#constant/plane.asc#constant/rtilted.tif#' system/terrainDict"
 then
-    pass "sideways-tilted plane on a grid rotated by 30 deg: $msg"
-else
-    fail "sideways-tilted plane on a grid rotated by 30 deg: $msg"
+    if msg="$(fieldCheck "$c" '(lambda e: (e < 1e-9, "max |zb - y tan10 cos35| = %.3g m" % e))(max(abs(zb[k] - y[k]*math.tan(math.radians(10))*math.cos(math.radians(35))) for k in range(len(zb))))')"
+    then
+        pass "sideways-tilted plane on a grid rotated by 30 deg: $msg"
+    else
+        fail "sideways-tilted plane on a grid rotated by 30 deg: $msg"
+    fi
 fi
 
 # hazardMaps on the rotated plane: GeoTIFF alone, with the DEM's
