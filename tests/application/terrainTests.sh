@@ -9,6 +9,11 @@
 #       - a DEM that is exactly a 35 deg plane: zeta = 35 deg at every point
 #         of the inclination table and zb = 0, both to round-off (1e-9);
 #       - the plane tilted sideways by 10 deg: zb = y tan(10) cos(35) (1e-9);
+#       - the warning about a steep zb (|grad zb| > 0.5): the plane tilted
+#         sideways so that |grad zb| = 0.55 everywhere warns, naming every
+#         cell of the mesh and the largest 0.55; tilted to 0.45, the plane
+#         and the 10 deg tilt do not warn, each with its largest |grad zb|
+#         in the log (0.45, 0, tan(10) cos(35));
 #       - the DEM as .asc and as .tif give identical files;
 #       - release polygons (a rotated quadrilateral, a triangle): volume
 #         within one cell area x thickness of the analytic one, thickness
@@ -68,13 +73,16 @@ cp "$project"/tutorials/inclinedPlane/constant/transportProperties \
 ) || fail "base case: setEntry on its controlDict or transportProperties failed"
 
 # DEMs: plane (35 deg down X), tilted (and 10 deg up Y), hole (nodata under
-# the mesh), each .asc with full precision; .tif through gdal_translate
+# the mesh), steep and gentle (tilted up Y so that zb's slope across is 0.55
+# and 0.45; 320 m wide in X, from 960, as the normal from the mesh's first
+# cells reaches X < 1000 where zb is -22 m), each .asc with full precision;
+# .tif through gdal_translate
 $python - "$work/dem" <<'PYEOF'
 import math, sys
 out = sys.argv[1]
 a = math.tan(math.radians(35)); b = math.tan(math.radians(10))
 nx, ny, d, x0, y0 = 120, 80, 2.0, 1000.0, 5000.0
-def write(name, f):
+def write(name, f, nx=nx, x0=x0):
     with open(f"{out}/{name}.asc", "w") as o:
         o.write(f"ncols {nx}\nnrows {ny}\nxllcorner {x0}\nyllcorner {y0}\n"
                 f"cellsize {d}\nNODATA_value -9999\n")
@@ -87,8 +95,12 @@ write("plane", plane)
 write("tilted", lambda X, Y: plane(X, Y) + b*(Y - 5080))
 write("hole", lambda X, Y: -9999 if abs(X - 1100) < 6 and abs(Y - 5090) < 6
       else plane(X, Y))
+# zb = y tan(beta) cos(35) on a plane tilted by beta across: its slope g
+for name, g in [("steep", 0.55), ("gentle", 0.45)]:
+    t = g/math.cos(math.radians(35))
+    write(name, lambda X, Y, t=t: plane(X, Y) + t*(Y - 5080), nx=160, x0=960.0)
 PYEOF
-[ $? -eq 0 ] || fail "writing the DEMs plane.asc, tilted.asc, hole.asc"
+[ $? -eq 0 ] || fail "writing the DEMs plane.asc, tilted.asc, hole.asc, steep.asc, gentle.asc"
 gdal_translate -q --config AAIGRID_DATATYPE Float64 -ot Float64 "$work/dem/plane.asc" "$work/dem/plane.tif" \
     || fail "gdal_translate plane.asc plane.tif"
 cp "$work/dem"/*.asc "$work/dem"/*.tif "$work/base/constant/" \
@@ -129,6 +141,20 @@ newCase()
     rm -rf "$work/$1"
     cp -r "$work/base" "$work/$1"
     echo "$work/$1"
+}
+
+#- runCase <name> <terrainDict edit: a command run in the case>: a copy of
+#  base, edited, through terrainToCase; sets c to the case directory, and
+#  on a failure (a FAIL) returns 1.  Called in this shell, not in $(...),
+#  so that the FAIL is counted
+runCase()
+{
+    c="$work/$1"
+    newCase "$1" > /dev/null
+    (cd "$c" && eval "$2" && runApplication terrainToCase > /dev/null) \
+        && return 0
+    fail "$1: edit or terrainToCase failed (see $c/log.terrainToCase)"
+    return 1
 }
 
 #- Python check on a case: check <case> <python expression over zeta, x,
@@ -193,6 +219,58 @@ then
 else
     fail "sideways-tilted plane: terrainToCase failed"
 fi
+
+# -- 2b. The warning about a steep zb ------------------------------------------
+#- gradCheck <case> <what> <its largest |grad zb|> <warned: yes | no>: the
+#  largest |grad zb| in terrainToCase's log within 1e-6 of the given one;
+#  warned: the warning names every cell of the mesh as steeper than 0.5 and
+#  that largest value, and terrainToCase ended normally; not warned: no
+#  warning about |grad zb|
+gradCheck()
+{
+    local log="$1/log.terrainToCase" what="$2" want="$3" warned="$4"
+    local largest cells warning problems=""
+    largest="$(sed -n 's/^zb in .*; largest |grad zb| \([^ ]*\) (.*/\1/p' "$log")"
+    cells="$(sed -n 's/^Mesh: \([0-9]*\) x \([0-9]*\) cells .*/\1*\2/p' "$log")"
+    cells=$((${cells:-0}))
+    warning="$(grep -o '[0-9]* of [0-9]* cells have |grad zb| > .*' "$log" | cut -c1-100)"
+    [ -n "$largest" ] && $python -c "import sys; sys.exit(0 if abs($largest - $want) <= 1e-6 else 1)" \
+        || problems="$problems largest |grad zb| '$largest' in the log, not $want;"
+    [ "$cells" -gt 0 ] || problems="$problems no mesh size in the log;"
+    if [ "$warned" = yes ]
+    then
+        grep -q "FOAM Warning" "$log" || problems="$problems no FOAM Warning;"
+        case "$warning" in
+            "$cells of $cells cells have |grad zb| > 0.5 (26.565051 deg), the largest $largest "*) ;;
+            *) problems="$problems warning '$warning', not one naming $cells of $cells cells > 0.5 and the largest $largest;" ;;
+        esac
+        grep -q "^End" "$log" || problems="$problems no End;"
+    else
+        [ -z "$warning" ] || problems="$problems warned: '$warning';"
+    fi
+    if [ -z "$problems" ]
+    then
+        if [ "$warned" = yes ]
+        then
+            pass "steep zb warned, $what: $warning..."
+        else
+            pass "gentle zb not warned, $what: largest |grad zb| $largest in the log, no warning"
+        fi
+    else
+        fail "warning about a steep zb, $what:$problems (see $log)"
+    fi
+}
+if runCase steep "sed -i 's#constant/plane.asc#constant/steep.asc#' system/terrainDict"
+then
+    gradCheck "$c" "plane tilted across to |grad zb| = 0.55" 0.55 yes
+fi
+if runCase gentle "sed -i 's#constant/plane.asc#constant/gentle.asc#' system/terrainDict"
+then
+    gradCheck "$c" "plane tilted across to |grad zb| = 0.45" 0.45 no
+fi
+gradCheck "$work/plane" "plane" 0 no
+gradCheck "$work/tilted" "plane tilted 10 deg across" \
+    "$($python -c 'import math; print(math.tan(math.radians(10))*math.cos(math.radians(35)))')" no
 
 # -- 3. .asc and .tif give identical cases -----------------------------------
 c="$(newCase tif)"
@@ -522,20 +600,6 @@ PYEOF
     else
         fail "$4: $msg"
     fi
-}
-
-#- runCase <name> <terrainDict edit: a command run in the case>: a copy of
-#  base, edited, through terrainToCase; sets c to the case directory, and
-#  on a failure (a FAIL) returns 1.  Called in this shell, not in $(...),
-#  so that the FAIL is counted
-runCase()
-{
-    c="$work/$1"
-    newCase "$1" > /dev/null
-    (cd "$c" && eval "$2" && runApplication terrainToCase > /dev/null) \
-        && return 0
-    fail "$1: edit or terrainToCase failed (see $c/log.terrainToCase)"
-    return 1
 }
 
 # Release rasters: the ramp on its own grid, vertical and normal; the
