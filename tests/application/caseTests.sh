@@ -13,7 +13,7 @@
 #         whose |dh/dt| report is written;
 #       - a restart from latestTime continues exactly (files identical);
 #       - foamToVTK reads the output and finds h, U and hU.
-#     Prints one line per check and "N passed, M failed".
+#     Prints one line per check and "N passed, M failed, K skipped".
 #
 # Usage
 #     caseTests.sh <project dir> <work dir>
@@ -33,7 +33,7 @@ cp -r "$project"/tutorials/damBreak/{0.orig,constant,system} "$base"/
     runApplication blockMesh
     restore0Dir
     runApplication setAvalancheFields
-) > "$work/base.log" 2>&1 || { cat "$work/base.log"; echo "0 passed, 1 failed"; exit 1; }
+) > "$work/base.log" 2>&1 || { cat "$work/base.log"; fail "setting up the base case (its log above)"; finish; exit 1; }
 
 newCase()
 {
@@ -1100,7 +1100,7 @@ else
 fi
 if [ -z "$made" ]
 then
-    echo "SKIP  read-only case directory: as root, and a read-only bind mount is not allowed here"
+    skip "read-only case directory: as root, and a read-only bind mount is not allowed here"
 else
     cp -r "$d/0.05" "$work/readOnly.0.05"
     (cd "$d" && savageHutterFoam -backend cpu > "$roLog" 2>&1)
@@ -1158,7 +1158,7 @@ then
     fi
     umount "$fs"
 else
-    echo "SKIP  full disk on a tmpfs: mounting is not allowed here (the ulimit -f test above stands in)"
+    skip "full disk on a tmpfs: mounting is not allowed here (the ulimit -f test above stands in)"
 fi
 
 # -- A restart whose U was edited after the write uses h U, not the stale hU --

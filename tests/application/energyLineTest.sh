@@ -14,33 +14,29 @@
 #     (20 m cells, 47 x 10), the solver to rest (steadyStateTolerance),
 #     hazardMaps; passes when |comTravelAngle - delta| < 0.5 deg, no volume
 #     left the mesh and the run ended at rest.  About 2 s.
-#     Prints one line per check and "N passed, M failed".
+#     Prints one line per check and "N passed, M failed, K skipped".
 #
 # Usage
 #     energyLineTest.sh <project dir> <work dir>
 #------------------------------------------------------------------------------
-set -u
 project="$1"
 work="$2"
-. "$project/bin/tools/RunFunctions"
+. "$project/tests/application/testFunctions.sh"
 python=/usr/bin/python3
 delta=20
 
-passed=0
-failed=0
-pass() { echo "PASS  $*"; passed=$((passed + 1)); }
-fail() { echo "FAIL  $*"; failed=$((failed + 1)); }
-
-rm -rf "$work"
 mkdir -p "$work/system" "$work/constant"
 cd "$work" || exit 1
 tutorial="$project/tutorials/terrainChute"
-cp "$tutorial"/system/{controlDict,fvSolution,fvSchemes} system/
-cp "$tutorial"/constant/transportProperties constant/
-setEntry constant/transportProperties lambda 0
-setEntry constant/transportProperties CoulombCoeffs/delta "$delta"
-setEntry system/controlDict endTime 400
-setEntry system/controlDict writeInterval 50
+# In a subshell: setEntry and runApplication exit on a failure
+(
+    cp "$tutorial"/system/{controlDict,fvSolution,fvSchemes} system/ \
+        && cp "$tutorial"/constant/transportProperties constant/ \
+        && setEntry constant/transportProperties lambda 0 \
+        && setEntry constant/transportProperties CoulombCoeffs/delta "$delta" \
+        && setEntry system/controlDict endTime 400 \
+        && setEntry system/controlDict writeInterval 50
+) || fail "copying the terrainChute tutorial's dictionaries or setEntry failed"
 
 $python - <<'PYEOF'
 import math
@@ -62,6 +58,7 @@ with open("constant/chute.asc", "w") as o:
         o.write(" ".join("%.17g" % (col[i] + 10*(y/100)**2)
                          for i in range(NX)) + "\n")
 PYEOF
+[ $? -eq 0 ] || fail "writing the DEM chute.asc"
 
 cat > system/terrainDict <<'EOD'
 FoamFile { version 2.0; format ascii; class dictionary; object terrainDict; }
@@ -82,8 +79,10 @@ release
 EOD
 
 start=$SECONDS
-if runApplication terrainToCase && runApplication blockMesh \
-    && runApplication savageHutterFoam && runApplication hazardMaps
+if (
+    runApplication terrainToCase && runApplication blockMesh \
+        && runApplication savageHutterFoam && runApplication hazardMaps
+)
 then
     latest="$(ls postProcessing/hazardMaps | sort -g | tail -n1)"
     report="postProcessing/hazardMaps/$latest/report.dat"
@@ -114,6 +113,4 @@ else
 fi
 echo "($((SECONDS - start)) s)"
 
-echo
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ] && [ "$passed" -gt 0 ]
+finish

@@ -86,8 +86,8 @@
 #     (it segfaults on a zero or negative cell count) the line says so and
 #     the summary counts it; the variant's outcome is the solver's.
 #     Prints every variant's outcome, a table per keyword, the counts, and
-#     "N passed, M failed" (one check per variant).  Variants run two at a
-#     time (SH_FUZZ_JOBS).
+#     "N passed, M failed, K skipped" (one check per variant).  Variants run
+#     two at a time (SH_FUZZ_JOBS).
 #
 #     Entries are changed with foamDictionary -set/-remove, except in
 #     setAvalancheFieldsDict and fvOptions (written out per variant:
@@ -238,7 +238,7 @@ zb ( plane { gradient (0.02 0.05); } );' > "$d/system/zbDict"
     d="$work/mesh"; cp -r "$pre" "$d"
     setEntry "$d/0/h" internalField 'uniform 1'
     runs "$d"
-) > "$work/setup.log" 2>&1 || { cat "$work/setup.log"; echo "0 passed, 1 failed"; exit 1; }
+) > "$work/setup.log" 2>&1 || { cat "$work/setup.log"; fail "setting up the cases (the log above)"; finish; exit 1; }
 
 # -- The keywords -------------------------------------------------------------
 # app|case|file|entry|kind|extras

@@ -33,7 +33,7 @@
 #         two renames (<case>/.savageHutterFoam-writing/<time>.replaced,
 #         <time> missing) is moved back, with a warning, before the start
 #         time is chosen: startFrom latestTime starts from it.
-#     Prints one line per check and "N passed, M failed".
+#     Prints one line per check and "N passed, M failed, K skipped".
 #
 # Usage
 #     signalTests.sh <project dir> <work dir>

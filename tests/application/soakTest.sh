@@ -13,7 +13,7 @@
 #       - memory: the resident set size (VmRSS, sampled from /proc every
 #         0.2 s) after the first write and at the end differ by less than
 #         256 kB, while 200 writes would leak 800 kB if each kept one field.
-#     Prints the figures and "N passed, M failed".
+#     Prints the figures and "N passed, M failed, K skipped".
 #
 # Usage
 #     soakTest.sh <project dir> <work dir> [STEPS]
@@ -51,7 +51,7 @@ every=$((steps / 200))
         foamDictionary 0/h -entry "boundaryField/$side" \
             -set "{ type zeroGradient; }" > /dev/null
     done
-) > "$work/setup.log" 2>&1 || { cat "$work/setup.log"; echo "0 passed, 1 failed"; exit 1; }
+) > "$work/setup.log" 2>&1 || { cat "$work/setup.log"; fail "setting up the case (its log above)"; finish; exit 1; }
 
 log="$d/log.savageHutterFoam"
 # One thread: OpenMP on 512 cells costs more than it gains, the more so

@@ -26,41 +26,23 @@
 #       - bad input (no time directory, h missing at a time, no inclination
 #         and no terrainMapping): non-zero exit, FOAM FATAL (IO) ERROR naming
 #         the file or keyword, nothing written.
-#     Prints one line per check and "N passed, M failed".
+#     Prints one line per check and "N passed, M failed, K skipped".
 #
 # Usage
 #     surfaceTests.sh <project dir> <work dir>
 #------------------------------------------------------------------------------
-set -u
 project="$1"
 work="$2"
-. "$project/bin/tools/RunFunctions"
+. "$project/tests/application/testFunctions.sh"
 python=/usr/bin/python3
-
-passed=0
-failed=0
-pass() { echo "PASS  $*"; passed=$((passed + 1)); }
-fail() { echo "FAIL  $*"; failed=$((failed + 1)); }
 
 #- Run the python checks of stdin on a case; count its PASS/FAIL lines
 pyChecks()
 {
     local out
     out="$($python - "$@" 2>&1)"
-    local rc=$?
-    echo "$out" | grep -v '^PASS\|^FAIL'
-    while IFS= read -r line
-    do
-        case "$line" in
-            PASS*) passed=$((passed + 1)); echo "$line" ;;
-            FAIL*) failed=$((failed + 1)); echo "$line" ;;
-        esac
-    done <<< "$out"
-    echo "$out" | grep -q '^PASS' || fail "python checks on $1 ran no check (rc $rc)"
+    tally $? "$out" "python checks on $1"
 }
-
-rm -rf "$work"
-mkdir -p "$work"
 
 # Reading the .vtp files: shared by the checks below
 cat > "$work/vtp.py" <<'PYEOF'
@@ -192,6 +174,7 @@ with open(f"{sys.argv[1]}/dem.asc", "w") as o:
         o.write(" ".join("%.17g" % (2000 - a*(X - x0) + b*(Y - 5080))
                          for X in (x0 + (i + 0.5)*d for i in range(nx))) + "\n")
 PYEOF
+[ $? -eq 0 ] || fail "terrain case: writing its DEM dem.asc"
 cat > "$t/system/terrainDict" <<'EOD'
 FoamFile { version 2.0; format ascii; class dictionary; object terrainDict; }
 dem             "constant/dem.asc";
@@ -356,6 +339,4 @@ c="$(bad noInclination)"
 sed -i 's/^inclination .*//' "$c/constant/transportProperties"
 expectRefusal "no inclination, no terrainMapping" "$c" "transportProperties" "'inclination'"
 
-echo
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ] && [ "$passed" -gt 0 ]
+finish

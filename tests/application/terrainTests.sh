@@ -9,6 +9,11 @@
 #       - a DEM that is exactly a 35 deg plane: zeta = 35 deg at every point
 #         of the inclination table and zb = 0, both to round-off (1e-9);
 #       - the plane tilted sideways by 10 deg: zb = y tan(10) cos(35) (1e-9);
+#       - the warning about a steep zb (|grad zb| > 0.5): the plane tilted
+#         sideways so that |grad zb| = 0.55 everywhere warns, naming every
+#         cell of the mesh and the largest 0.55; tilted to 0.45, the plane
+#         and the 10 deg tilt do not warn, each with its largest |grad zb|
+#         in the log (0.45, 0, tan(10) cos(35));
 #       - the DEM as .asc and as .tif give identical files;
 #       - release polygons (a rotated quadrilateral, a triangle): volume
 #         within one cell area x thickness of the analytic one, thickness
@@ -44,23 +49,16 @@
 #         polygon or a thickness), a shapefile and a raster in a system no
 #         transformation reaches, a DEM whose pixels have no area: refused
 #         as above.
-#     Prints one line per check and "N passed, M failed".
+#     Prints one line per check and "N passed, M failed, K skipped".
 #
 # Usage
 #     terrainTests.sh <project dir> <work dir>
 #------------------------------------------------------------------------------
-set -u
 project="$1"
 work="$2"
-. "$project/bin/tools/RunFunctions"
+. "$project/tests/application/testFunctions.sh"
 python=/usr/bin/python3
 
-passed=0
-failed=0
-pass() { echo "PASS  $*"; passed=$((passed + 1)); }
-fail() { echo "FAIL  $*"; failed=$((failed + 1)); }
-
-rm -rf "$work"
 mkdir -p "$work/base/system" "$work/base/constant" "$work/dem"
 cp "$project"/tutorials/inclinedPlane/system/{controlDict,fvSolution,fvSchemes} \
     "$work/base/system/"
@@ -72,16 +70,19 @@ cp "$project"/tutorials/inclinedPlane/constant/transportProperties \
     setEntry system/controlDict endTime 1
     setEntry system/controlDict writeInterval 0.5
     setEntry system/controlDict writeFormat ascii
-)
+) || fail "base case: setEntry on its controlDict or transportProperties failed"
 
 # DEMs: plane (35 deg down X), tilted (and 10 deg up Y), hole (nodata under
-# the mesh), each .asc with full precision; .tif through gdal_translate
+# the mesh), steep and gentle (tilted up Y so that zb's slope across is 0.55
+# and 0.45; 320 m wide in X, from 960, as the normal from the mesh's first
+# cells reaches X < 1000 where zb is -22 m), each .asc with full precision;
+# .tif through gdal_translate
 $python - "$work/dem" <<'PYEOF'
 import math, sys
 out = sys.argv[1]
 a = math.tan(math.radians(35)); b = math.tan(math.radians(10))
 nx, ny, d, x0, y0 = 120, 80, 2.0, 1000.0, 5000.0
-def write(name, f):
+def write(name, f, nx=nx, x0=x0):
     with open(f"{out}/{name}.asc", "w") as o:
         o.write(f"ncols {nx}\nnrows {ny}\nxllcorner {x0}\nyllcorner {y0}\n"
                 f"cellsize {d}\nNODATA_value -9999\n")
@@ -94,10 +95,16 @@ write("plane", plane)
 write("tilted", lambda X, Y: plane(X, Y) + b*(Y - 5080))
 write("hole", lambda X, Y: -9999 if abs(X - 1100) < 6 and abs(Y - 5090) < 6
       else plane(X, Y))
+# zb = y tan(beta) cos(35) on a plane tilted by beta across: its slope g
+for name, g in [("steep", 0.55), ("gentle", 0.45)]:
+    t = g/math.cos(math.radians(35))
+    write(name, lambda X, Y, t=t: plane(X, Y) + t*(Y - 5080), nx=160, x0=960.0)
 PYEOF
+[ $? -eq 0 ] || fail "writing the DEMs plane.asc, tilted.asc, hole.asc, steep.asc, gentle.asc"
 gdal_translate -q --config AAIGRID_DATATYPE Float64 -ot Float64 "$work/dem/plane.asc" "$work/dem/plane.tif" \
     || fail "gdal_translate plane.asc plane.tif"
-cp "$work/dem"/*.asc "$work/dem"/*.tif "$work/base/constant/"
+cp "$work/dem"/*.asc "$work/dem"/*.tif "$work/base/constant/" \
+    || fail "copying the DEMs into the base case"
 
 # terrainDict of the base case; release r1 a rotated quadrilateral (plan
 # area 800 m^2; one vertex on an edge), r2 a triangle (600 m^2)
@@ -134,6 +141,20 @@ newCase()
     rm -rf "$work/$1"
     cp -r "$work/base" "$work/$1"
     echo "$work/$1"
+}
+
+#- runCase <name> <terrainDict edit: a command run in the case>: a copy of
+#  base, edited, through terrainToCase; sets c to the case directory, and
+#  on a failure (a FAIL) returns 1.  Called in this shell, not in $(...),
+#  so that the FAIL is counted
+runCase()
+{
+    c="$work/$1"
+    newCase "$1" > /dev/null
+    (cd "$c" && eval "$2" && runApplication terrainToCase > /dev/null) \
+        && return 0
+    fail "$1: edit or terrainToCase failed (see $c/log.terrainToCase)"
+    return 1
 }
 
 #- Python check on a case: check <case> <python expression over zeta, x,
@@ -198,6 +219,58 @@ then
 else
     fail "sideways-tilted plane: terrainToCase failed"
 fi
+
+# -- 2b. The warning about a steep zb ------------------------------------------
+#- gradCheck <case> <what> <its largest |grad zb|> <warned: yes | no>: the
+#  largest |grad zb| in terrainToCase's log within 1e-6 of the given one;
+#  warned: the warning names every cell of the mesh as steeper than 0.5 and
+#  that largest value, and terrainToCase ended normally; not warned: no
+#  warning about |grad zb|
+gradCheck()
+{
+    local log="$1/log.terrainToCase" what="$2" want="$3" warned="$4"
+    local largest cells warning problems=""
+    largest="$(sed -n 's/^zb in .*; largest |grad zb| \([^ ]*\) (.*/\1/p' "$log")"
+    cells="$(sed -n 's/^Mesh: \([0-9]*\) x \([0-9]*\) cells .*/\1*\2/p' "$log")"
+    cells=$((${cells:-0}))
+    warning="$(grep -o '[0-9]* of [0-9]* cells have |grad zb| > .*' "$log" | cut -c1-100)"
+    [ -n "$largest" ] && $python -c "import sys; sys.exit(0 if abs($largest - $want) <= 1e-6 else 1)" \
+        || problems="$problems largest |grad zb| '$largest' in the log, not $want;"
+    [ "$cells" -gt 0 ] || problems="$problems no mesh size in the log;"
+    if [ "$warned" = yes ]
+    then
+        grep -q "FOAM Warning" "$log" || problems="$problems no FOAM Warning;"
+        case "$warning" in
+            "$cells of $cells cells have |grad zb| > 0.5 (26.565051 deg), the largest $largest "*) ;;
+            *) problems="$problems warning '$warning', not one naming $cells of $cells cells > 0.5 and the largest $largest;" ;;
+        esac
+        grep -q "^End" "$log" || problems="$problems no End;"
+    else
+        [ -z "$warning" ] || problems="$problems warned: '$warning';"
+    fi
+    if [ -z "$problems" ]
+    then
+        if [ "$warned" = yes ]
+        then
+            pass "steep zb warned, $what: $warning..."
+        else
+            pass "gentle zb not warned, $what: largest |grad zb| $largest in the log, no warning"
+        fi
+    else
+        fail "warning about a steep zb, $what:$problems (see $log)"
+    fi
+}
+if runCase steep "sed -i 's#constant/plane.asc#constant/steep.asc#' system/terrainDict"
+then
+    gradCheck "$c" "plane tilted across to |grad zb| = 0.55" 0.55 yes
+fi
+if runCase gentle "sed -i 's#constant/plane.asc#constant/gentle.asc#' system/terrainDict"
+then
+    gradCheck "$c" "plane tilted across to |grad zb| = 0.45" 0.45 no
+fi
+gradCheck "$work/plane" "plane" 0 no
+gradCheck "$work/tilted" "plane tilted 10 deg across" \
+    "$($python -c 'import math; print(math.tan(math.radians(10))*math.cos(math.radians(35)))')" no
 
 # -- 3. .asc and .tif give identical cases -----------------------------------
 c="$(newCase tif)"
@@ -330,15 +403,7 @@ say(good, "hazardMaps report.dat: " + ", ".join(f"{k} {rep.get(k)}" for k in key
 sys.exit(0 if ok else 1)
 PYEOF
 )"
-    echo "$checks" | grep -v '^PASS\|^FAIL'
-    while IFS= read -r line
-    do
-        case "$line" in
-            PASS*) passed=$((passed + 1)); echo "$line" ;;
-            FAIL*) failed=$((failed + 1)); echo "$line" ;;
-        esac
-    done <<< "$checks"
-    echo "$checks" | grep -q '^PASS' || fail "hazardMaps: no check ran"
+    tally $? "$checks" "hazardMaps' checks"
 else
     fail "hazardMaps: blockMesh, savageHutterFoam or hazardMaps failed"
 fi
@@ -351,7 +416,11 @@ expectRefusal()
     local c
     c="$(newCase "bad-${name// /-}")"
     [ "$edit" = - ] || sed -i "$edit" "$c/system/terrainDict"
-    [ $# -ge 4 ] && (cd "$c" && eval "$4")
+    if [ $# -ge 4 ] && ! (cd "$c" && eval "$4")
+    then
+        fail "$name: the set-up command failed: $4"
+        return
+    fi
     local before after
     before="$(snapshot "$c")"
     (cd "$c" && terrainToCase > log.terrainToCase 2>&1)
@@ -451,6 +520,7 @@ with open(f"{out}/degenerate.vrt", "w") as o:
     o.write(open(f"{out}/rplane.vrt").read().replace(
         ", ".join("%.17g" % g for g in gt), "1000, 2, 0, 5000, 0, 0"))
 PYEOF
+[ $? -eq 0 ] || fail "writing this section's rasters (rel.asc, utm.asc, rplane.vrt, ...)"
 (
     cd "$work/base/constant" || exit 1
     t="gdal_translate -q --config AAIGRID_DATATYPE Float64 -ot Float64"
@@ -532,39 +602,34 @@ PYEOF
     fi
 }
 
-#- runCase <name> <terrainDict edit: a command run in the case>: a copy of
-#  base, edited, through terrainToCase; prints the case directory
-runCase()
-{
-    local c
-    c="$(newCase "$1")"
-    (cd "$c" && eval "$2" && runApplication terrainToCase > /dev/null) \
-        || { fail "$1: terrainToCase failed (see $c/log.terrainToCase)"; }
-    echo "$c"
-}
-
 # Release rasters: the ramp on its own grid, vertical and normal; the
 # uniform raster, wider than the mesh
 relVolume="$(cat "$work/base/constant/rel.volume")"
 cellArea=25
-c="$(runCase raster-vertical "setR1 . 'raster \"constant/rel.asc\";'; sed -i 's/thicknessDirection normal/thicknessDirection vertical/' system/terrainDict")"
-volumeCheck "$c" r1 "$relVolume" "$cellArea*1.1" "release raster (3 m pixels, ramp 0.5 to 1.1 m), vertical"
-volumeCheck "$c" r1 "$relVolume" "1e-7*$relVolume" "release raster, vertical, exact on a plane DEM" "the log's 8 digits"
-c="$(runCase raster-normal "setR1 . 'raster \"constant/rel.asc\";'")"
-volumeCheck "$c" r1 "$relVolume/$cos35" "$cellArea*1.1" "release raster, normal (sum d A / cos 35)"
-volumeCheck "$c" r1 "$relVolume/$cos35" "1e-7*$relVolume/$cos35" "release raster, normal, exact on a plane DEM" "the log's 8 digits"
-c="$(runCase raster-uniform "setR1 . 'raster \"constant/uniform.asc\";'; sed -i '/^    r2/,/^    }/d' system/terrainDict")"
-if msg="$(fieldCheck "$c" '(lambda h: (max(abs(v - 1.5) for v in h) < 1e-9, "h in [%.15g, %.15g] m over %d cells" % (min(h), max(h), len(h))))(field("h"))')"
+if runCase raster-vertical "setR1 . 'raster \"constant/rel.asc\";'; sed -i 's/thicknessDirection normal/thicknessDirection vertical/' system/terrainDict"
 then
-    pass "uniform release raster of 1.5 m (7 m pixels) over the whole mesh and beyond: $msg"
-else
-    fail "uniform release raster of 1.5 m over the whole mesh: $msg"
+    volumeCheck "$c" r1 "$relVolume" "$cellArea*1.1" "release raster (3 m pixels, ramp 0.5 to 1.1 m), vertical"
+    volumeCheck "$c" r1 "$relVolume" "1e-7*$relVolume" "release raster, vertical, exact on a plane DEM" "the log's 8 digits"
 fi
-if grep -q "reach outside the mesh" "$c/log.terrainToCase"
+if runCase raster-normal "setR1 . 'raster \"constant/rel.asc\";'"
 then
-    pass "uniform release raster beyond the mesh: warned ($(grep -o '[0-9]* of the [0-9]* pixels.*' "$c/log.terrainToCase" | head -n1 | cut -c1-80)...)"
-else
-    fail "uniform release raster beyond the mesh: no warning"
+    volumeCheck "$c" r1 "$relVolume/$cos35" "$cellArea*1.1" "release raster, normal (sum d A / cos 35)"
+    volumeCheck "$c" r1 "$relVolume/$cos35" "1e-7*$relVolume/$cos35" "release raster, normal, exact on a plane DEM" "the log's 8 digits"
+fi
+if runCase raster-uniform "setR1 . 'raster \"constant/uniform.asc\";'; sed -i '/^    r2/,/^    }/d' system/terrainDict"
+then
+    if msg="$(fieldCheck "$c" '(lambda h: (max(abs(v - 1.5) for v in h) < 1e-9, "h in [%.15g, %.15g] m over %d cells" % (min(h), max(h), len(h))))(field("h"))')"
+    then
+        pass "uniform release raster of 1.5 m (7 m pixels) over the whole mesh and beyond: $msg"
+    else
+        fail "uniform release raster of 1.5 m over the whole mesh: $msg"
+    fi
+    if grep -q "reach outside the mesh" "$c/log.terrainToCase"
+    then
+        pass "uniform release raster beyond the mesh: warned ($(grep -o '[0-9]* of the [0-9]* pixels.*' "$c/log.terrainToCase" | head -n1 | cut -c1-80)...)"
+    else
+        fail "uniform release raster beyond the mesh: no warning"
+    fi
 fi
 
 # Coordinate reference systems: r1 in the UTM DEM's coordinates in the
@@ -613,20 +678,24 @@ else
 fi
 
 # Rotated DEMs: the plane and the tilted plane on a grid rotated by 30 deg
-c="$(runCase rotated "sed -i 's#constant/plane.asc#constant/rplane.tif#' system/terrainDict")"
-if msg="$(fieldCheck "$c" '(max(abs(z - 35) for z in zeta) < 1e-9 and max(map(abs, zb)) < 1e-9, "max |zeta - 35| = %.3g deg, max |zb| = %.3g m" % (max(abs(z - 35) for z in zeta), max(map(abs, zb))))')"
+if runCase rotated "sed -i 's#constant/plane.asc#constant/rplane.tif#' system/terrainDict"
 then
-    pass "plane DEM on a grid rotated by 30 deg: $msg"
-else
-    fail "plane DEM on a grid rotated by 30 deg: $msg"
+    if msg="$(fieldCheck "$c" '(max(abs(z - 35) for z in zeta) < 1e-9 and max(map(abs, zb)) < 1e-9, "max |zeta - 35| = %.3g deg, max |zb| = %.3g m" % (max(abs(z - 35) for z in zeta), max(map(abs, zb))))')"
+    then
+        pass "plane DEM on a grid rotated by 30 deg: $msg"
+    else
+        fail "plane DEM on a grid rotated by 30 deg: $msg"
+    fi
+    compareH "$c" "$work/plane" 1e-9 "plane DEM on a rotated grid: 0/h that of the north-up DEM"
 fi
-compareH "$c" "$work/plane" 1e-9 "plane DEM on a rotated grid: 0/h that of the north-up DEM"
-c="$(runCase rotated-tilted "sed -i 's#constant/plane.asc#constant/rtilted.tif#' system/terrainDict")"
-if msg="$(fieldCheck "$c" '(lambda e: (e < 1e-9, "max |zb - y tan10 cos35| = %.3g m" % e))(max(abs(zb[k] - y[k]*math.tan(math.radians(10))*math.cos(math.radians(35))) for k in range(len(zb))))')"
+if runCase rotated-tilted "sed -i 's#constant/plane.asc#constant/rtilted.tif#' system/terrainDict"
 then
-    pass "sideways-tilted plane on a grid rotated by 30 deg: $msg"
-else
-    fail "sideways-tilted plane on a grid rotated by 30 deg: $msg"
+    if msg="$(fieldCheck "$c" '(lambda e: (e < 1e-9, "max |zb - y tan10 cos35| = %.3g m" % e))(max(abs(zb[k] - y[k]*math.tan(math.radians(10))*math.cos(math.radians(35))) for k in range(len(zb))))')"
+    then
+        pass "sideways-tilted plane on a grid rotated by 30 deg: $msg"
+    else
+        fail "sideways-tilted plane on a grid rotated by 30 deg: $msg"
+    fi
 fi
 
 # hazardMaps on the rotated plane: GeoTIFF alone, with the DEM's
@@ -701,6 +770,4 @@ expectRefusal "release raster no transformation reaches" "local.tif" - \
     "cp ../utm-dictionary/system/terrainDict system/ && sed -i 's#polygon ((600040.*#raster \"constant/local.tif\";#; /thickness   2;/d' system/terrainDict"
 expectRefusal "DEM of pixels without area" "'dem'" 's#constant/plane.asc#constant/degenerate.tif#'
 
-echo
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ] && [ "$passed" -gt 0 ]
+finish

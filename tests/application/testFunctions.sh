@@ -3,15 +3,25 @@
 #
 # Description
 #     What the application's test scripts share (caseTests.sh,
-#     signalTests.sh, soakTest.sh, fuzzTest.sh), sourced as they start
-#     after setting project (the project's root) and work (their work
-#     directory): sets -u, empties the work directory and makes it
-#     absolute, sources bin/tools/RunFunctions, and defines
+#     signalTests.sh, soakTest.sh, fuzzTest.sh, terrainTests.sh,
+#     surfaceTests.sh, energyLineTest.sh), sourced as they start after
+#     setting project (the project's root) and work (their work directory):
+#     sets -u, empties the work directory and makes it absolute, sources
+#     bin/tools/RunFunctions, and defines
 #       pass <text>, fail <text>   a check's outcome: a PASS or FAIL line,
 #                                  counted in $passed and $failed
-#       finish                     prints "N passed, M failed"; its status
-#                                  (the script's, as its last command) is
-#                                  0 when nothing failed
+#       skip <text>                a check that cannot be made here (saying
+#                                  why): a SKIP line, counted in $skipped
+#       tally <status> <output> <what>   the PASS and FAIL lines of a check
+#                                  program's output (a python script's)
+#                                  counted as pass and fail, its other lines
+#                                  printed; a FAIL more when it made no
+#                                  check, or when it exited non-zero without
+#                                  a FAIL line (a crash half-way)
+#       finish                     prints "N passed, M failed, K skipped";
+#                                  its status (the script's, as its last
+#                                  command) is 0 when nothing failed and
+#                                  something passed
 #       timeDirs <case>            the time directories but 0 (and *orig*),
 #                                  in the order of their times
 #       complete <case> <time>     whether every field and uniform/time of
@@ -19,6 +29,11 @@
 #                                  divider of a finished write
 #       waitFor <file> <regex> <seconds>   until the file has a matching
 #                                  line (status 1 when it has none by then)
+#
+#     pass, fail and skip belong in the script's own shell: called in a
+#     subshell (inside $(...), ( ... ) or a pipeline) their count would be
+#     lost, so there they also note the line in $work/.subshellChecks and
+#     finish counts each such line as a FAIL.
 #------------------------------------------------------------------------------
 set -u
 rm -rf "$work"
@@ -28,14 +43,48 @@ work="$(cd "$work" && pwd)"
 
 passed=0
 failed=0
-pass() { echo "PASS  $*"; passed=$((passed + 1)); }
-fail() { echo "FAIL  $*"; failed=$((failed + 1)); }
+skipped=0
+subshellChecks="$work/.subshellChecks"
+
+#- noteSubshell <line>: the line noted when not in the script's own shell
+noteSubshell()
+{
+    [ "$BASHPID" = "$$" ] || echo "$*" >> "$subshellChecks"
+}
+pass() { echo "PASS  $*"; passed=$((passed + 1)); noteSubshell "PASS  $*"; }
+fail() { echo "FAIL  $*"; failed=$((failed + 1)); noteSubshell "FAIL  $*"; }
+skip() { echo "SKIP  $*"; skipped=$((skipped + 1)); noteSubshell "SKIP  $*"; }
+
+tally()
+{
+    local rc="$1" out="$2" what="$3" line nPass=0 nFail=0
+    while IFS= read -r line
+    do
+        case "$line" in
+            "PASS  "*) pass "${line#PASS  }"; nPass=$((nPass + 1)) ;;
+            "FAIL  "*) fail "${line#FAIL  }"; nFail=$((nFail + 1)) ;;
+            *) [ -z "$line" ] || echo "$line" ;;
+        esac
+    done <<< "$out"
+    [ $((nPass + nFail)) -gt 0 ] || fail "$what: no check ran (exit status $rc)"
+    [ "$rc" -eq 0 ] || [ "$nFail" -gt 0 ] \
+        || fail "$what: exit status $rc without a FAIL line"
+}
 
 finish()
 {
+    local line
+    if [ -s "$subshellChecks" ]
+    then
+        while IFS= read -r line
+        do
+            fail "made in a subshell, its count lost (call pass, fail and skip in the script's own shell): $line"
+        done < "$subshellChecks"
+    fi
+    [ "$passed" -gt 0 ] || [ "$failed" -gt 0 ] || fail "no check was made"
     echo
-    echo "$passed passed, $failed failed"
-    [ "$failed" -eq 0 ]
+    echo "$passed passed, $failed failed, $skipped skipped"
+    [ "$failed" -eq 0 ] && [ "$passed" -gt 0 ]
 }
 
 timeDirs()
