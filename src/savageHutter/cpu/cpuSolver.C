@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 #ifdef _OPENMP
 #   include <omp.h>
@@ -11,12 +13,56 @@
 namespace sh
 {
 
+namespace
+{
+
+//- The problem's grid is the halo's subdomain, its processor sides those
+//  with a neighbour
 template<class Real>
-CpuSolver<Real>::CpuSolver(const Problem<Real>& pb, bool parallel)
+const Problem<Real>& checkedSubdomain(const Problem<Real>& pb, Halo<Real>* halo)
+{
+    if (!halo)
+    {
+        return pb;
+    }
+    const Subdomain& s = halo->subdomain();
+    bool ok =
+        s.nx == pb.grid.nx && s.ny == pb.grid.ny
+     && s.i0 == pb.grid.i0 && s.j0 == pb.grid.j0
+     && s.nx >= Grid<Real>::ng && s.ny >= Grid<Real>::ng;
+    for (int side = 0; side < 4; ++side)
+    {
+        ok = ok
+         && s.processorSide(side) == (pb.bc.type[side] == BCType::processor);
+    }
+    if (!ok)
+    {
+        throw std::invalid_argument
+        (
+            "CpuSolver: the problem's grid (" + std::to_string(pb.grid.nx)
+          + " x " + std::to_string(pb.grid.ny) + " cells at ("
+          + std::to_string(pb.grid.i0) + ", " + std::to_string(pb.grid.j0)
+          + ")) or its processor sides are not the halo's subdomain"
+        );
+    }
+    return pb;
+}
+
+} // namespace
+
+
+template<class Real>
+CpuSolver<Real>::CpuSolver
+(
+    const Problem<Real>& pb,
+    bool parallel,
+    Halo<Real>* halo
+)
 :
-    geometry_(pb),
+    geometry_(checkedSubdomain(pb, halo), halo),
     parallel_(parallel),
-    peaks_(pb)
+    peaks_(pb),
+    halo_(halo)
 {
     this->time_ = pb.startTime;
     model_.p = pb.params;
@@ -25,6 +71,11 @@ CpuSolver<Real>::CpuSolver(const Problem<Real>& pb, bool parallel)
     model_.geo = geometry_.view();
 
     const Grid<Real>& g = pb.grid;
+    if (halo_)
+    {
+        ghostTheta_.assign(g.size(), Real(1));
+        model_.ghostTheta = ghostTheta_.data();
+    }
     const std::size_t n = g.size();
     U_.resize(n);
     Uh_.resize(n);
@@ -60,10 +111,33 @@ int CpuSolver<Real>::nThreads() const
 
 
 template<class Real>
+void CpuSolver<Real>::fillStateGhosts()
+{
+    if (!ghostsFilled_)
+    {
+        fillGhostCells(model_, U_.view(), halo_);
+        ghostsFilled_ = true;
+    }
+}
+
+
+template<class Real>
+bool CpuSolver<Real>::agreeToStop(bool stop)
+{
+    return halo_ ? halo_->anyAll(stop) : stop;
+}
+
+
+template<class Real>
 Real CpuSolver<Real>::stableDt()
 {
     const Grid<Real>& g = model_.g;
     const Fields<Real> U = U_.view();
+    if (halo_)
+    {
+        // The wave rate of a cell looks at its neighbours' h
+        fillStateGhosts();
+    }
     Real rate = inflowWaveRate(model_);
 
     #pragma omp parallel for if(parallel_) reduction(max:rate) schedule(static)
@@ -74,9 +148,48 @@ Real CpuSolver<Real>::stableDt()
             rate = shMax(rate, cellWaveRate(model_, U, i, j));
         }
     }
+    if (halo_)
+    {
+        rate = halo_->maxAll(rate);
+    }
     return rate > Real(0)
         ? model_.p.cfl/rate
         : std::numeric_limits<Real>::max();
+}
+
+
+template<class Real>
+void CpuSolver<Real>::exchangeDrainFactors(Real dt)
+{
+    // theta of the cells along the processor sides, for the neighbours'
+    // corrector (scheme.H drainFactorAt)
+    const Model<Real>& m = model_;
+    const Grid<Real>& g = m.g;
+    const Fields<Real> U = U_.view();
+    const FaceFields<Real> Fx = Fx_.view();
+    const FaceFields<Real> Fy = Fy_.view();
+    const auto processor = [&m](int side)
+    {
+        return m.bc.type[side] == BCType::processor;
+    };
+    for (int j = 0; j < g.ny; ++j)
+    {
+        const bool row = (j == 0 && processor(yMin))
+            || (j == g.ny - 1 && processor(yMax));
+        for (int i = 0; i < g.nx; ++i)
+        {
+            if
+            (
+                row || (i == 0 && processor(xMin))
+             || (i == g.nx - 1 && processor(xMax))
+            )
+            {
+                ghostTheta_[g.idx(i, j)] = drainFactor(m, U, Fx, Fy, dt, i, j);
+            }
+        }
+    }
+    Real* theta[1] = {ghostTheta_.data()};
+    exchangeGhostCells(*halo_, theta, 1, 1);
 }
 
 
@@ -93,7 +206,7 @@ void CpuSolver<Real>::advanceStep(Real dt, double tNew)
     const int nx = g.nx;
     const int ny = g.ny;
 
-    fillGhostCells(m, U);
+    fillStateGhosts();
 
     #pragma omp parallel for if(parallel_) schedule(static)
     for (int j = 0; j < ny; ++j)
@@ -104,7 +217,7 @@ void CpuSolver<Real>::advanceStep(Real dt, double tNew)
         }
     }
 
-    fillGhostCells(m, Uh);
+    fillGhostCells(m, Uh, halo_);
 
     // Each x-face i+1/2 for i = -1..nx-1 of rows 0..ny-1, each y-face
     // j+1/2 for j = -1..ny-1 of columns 0..nx-1, from the reconstructions
@@ -154,6 +267,11 @@ void CpuSolver<Real>::advanceStep(Real dt, double tNew)
         }
     }
 
+    if (halo_)
+    {
+        exchangeDrainFactors(dt);
+    }
+
     long long clips = 0;
     #pragma omp parallel for if(parallel_) reduction(+:clips) schedule(static)
     for (int j = 0; j < ny; ++j)
@@ -164,6 +282,13 @@ void CpuSolver<Real>::advanceStep(Real dt, double tNew)
         }
     }
     speedClips_ += clips;
+
+    if (halo_)
+    {
+        // Partial-wet cells take the velocity of a wet neighbour
+        Real* state[3] = {Un.h, Un.hu, Un.hv};
+        exchangeGhostCells(*halo_, state, 3, 1);
+    }
 
     const PeakFields<Real> P = peaks_.view();
     long long wet = 0;
@@ -180,6 +305,14 @@ void CpuSolver<Real>::advanceStep(Real dt, double tNew)
     wetUpdates_ += wet;
 
     std::swap(U_, Unew_);
+    ghostsFilled_ = false;
+}
+
+
+template<class Real>
+long long CpuSolver<Real>::wetCellUpdates()
+{
+    return halo_ ? halo_->sumAll(wetUpdates_) : wetUpdates_;
 }
 
 
@@ -211,8 +344,21 @@ PeakMaps<Real> CpuSolver<Real>::peakMaps()
 template<class Real>
 Diagnostics CpuSolver<Real>::diagnostics()
 {
+    if (!halo_)
+    {
+        Diagnostics d = diagnosticsOf(model_, U_.view());
+        d.speedClips = speedClips_;
+        return d;
+    }
+    // The wave rate of a cell looks at its neighbours' h
+    fillStateGhosts();
     Diagnostics d = diagnosticsOf(model_, U_.view());
-    d.speedClips = speedClips_;
+    d.volume = halo_->sumAll(d.volume);
+    d.wetCells = long(halo_->sumAll((long long)d.wetCells));
+    d.movingCells = long(halo_->sumAll((long long)d.movingCells));
+    d.maxRate = double(halo_->maxAll(Real(d.maxRate)));
+    d.hMax = double(halo_->maxAll(Real(d.hMax)));
+    d.speedClips = halo_->sumAll(speedClips_);
     return d;
 }
 

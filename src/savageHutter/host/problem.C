@@ -1,6 +1,7 @@
 #include "problem.H"
 #include "modelInput.H"
 #include "padded.H"
+#include "../parallel/halo.H"
 
 #include <algorithm>
 #include <cmath>
@@ -324,11 +325,15 @@ double Problem<Real>::volume() const
 
 
 template<class Real>
-HostGeometry<Real>::HostGeometry(const Problem<Real>& pb)
+HostGeometry<Real>::HostGeometry(const Problem<Real>& pb, Halo<Real>* halo)
 {
     const Grid<Real>& g = pb.grid;
     const int ng = Grid<Real>::ng;
     const int nc = g.stride();
+    const auto physical = [&pb](int side)
+    {
+        return pb.bc.type[side] != BCType::processor;
+    };
     cosZeta.resize(nc);
     sinZeta.resize(nc);
     kappa.resize(nc);
@@ -340,6 +345,39 @@ HostGeometry<Real>::HostGeometry(const Problem<Real>& pb)
         sinZeta[k] = Real(std::sin(double(pb.zeta[i])));
         kappa[k] = pb.kappa[i];
     }
+    if (halo)
+    {
+        // The neighbours' columns, through padded arrays of the column
+        // values (every row alike)
+        std::vector<Real> a[3];
+        std::vector<Real>* column[3] = {&cosZeta, &sinZeta, &kappa};
+        Real* arrays[3];
+        for (int n = 0; n < 3; ++n)
+        {
+            a[n].resize(g.size());
+            for (int j = -ng; j < g.ny + ng; ++j)
+            {
+                for (int i = -ng; i < g.nx + ng; ++i)
+                {
+                    a[n][g.idx(i, j)] = (*column[n])[i + ng];
+                }
+            }
+            arrays[n] = a[n].data();
+        }
+        halo->exchange(0, arrays, 3, ng);
+        for (int n = 0; n < 3; ++n)
+        {
+            std::vector<Real>& c = *column[n];
+            for (int k = 1; k <= ng; ++k)
+            {
+                if (!physical(xMin)) { c[ng - k] = a[n][g.idx(-k, 0)]; }
+                if (!physical(xMax))
+                {
+                    c[g.nx - 1 + k + ng] = a[n][g.idx(g.nx - 1 + k, 0)];
+                }
+            }
+        }
+    }
 
     // Topography on the padded grid.  Beyond a wall the ghost cells mirror
     // the interior (ghost -1 <- cell 0, ghost -2 <- cell 1), as the
@@ -347,7 +385,8 @@ HostGeometry<Real>::HostGeometry(const Problem<Real>& pb)
     // open side (transmissive, inflow) the bed continues linearly, so that
     // the cells next to it feel its slope (a mirrored bed would give them
     // a flat reconstructed bed, physics/reconstruction.H).  x-sides first, then
-    // y-sides over whole padded rows (the corners).
+    // y-sides over whole padded rows (the corners); beyond a processor
+    // side, the neighbour's cells, in the same order.
     zb.assign(g.size(), Real(0));
     for (int j = 0; j < g.ny; ++j)
     {
@@ -370,23 +409,46 @@ HostGeometry<Real>::HostGeometry(const Problem<Real>& pb)
         const Real d = Real(k < 0 ? -k : k - (n - 1));
         return at(e) + d*(at(e) - at(e1));
     };
+    Real* bed[1] = {zb.data()};
     for (int j = 0; j < g.ny; ++j)
     {
         const auto row = [&](int m) { return zb[g.idx(m, j)]; };
         for (int k = 1; k <= ng; ++k)
         {
-            zb[g.idx(-k, j)] = ghostBed(xMin, g.nx, -k, row);
-            zb[g.idx(g.nx - 1 + k, j)] = ghostBed(xMax, g.nx, g.nx - 1 + k, row);
+            if (physical(xMin))
+            {
+                zb[g.idx(-k, j)] = ghostBed(xMin, g.nx, -k, row);
+            }
+            if (physical(xMax))
+            {
+                zb[g.idx(g.nx - 1 + k, j)] =
+                    ghostBed(xMax, g.nx, g.nx - 1 + k, row);
+            }
         }
+    }
+    if (halo)
+    {
+        halo->exchange(0, bed, 1, ng);
     }
     for (int i = -ng; i < g.nx + ng; ++i)
     {
         const auto col = [&](int m) { return zb[g.idx(i, m)]; };
         for (int k = 1; k <= ng; ++k)
         {
-            zb[g.idx(i, -k)] = ghostBed(yMin, g.ny, -k, col);
-            zb[g.idx(i, g.ny - 1 + k)] = ghostBed(yMax, g.ny, g.ny - 1 + k, col);
+            if (physical(yMin))
+            {
+                zb[g.idx(i, -k)] = ghostBed(yMin, g.ny, -k, col);
+            }
+            if (physical(yMax))
+            {
+                zb[g.idx(i, g.ny - 1 + k)] =
+                    ghostBed(yMax, g.ny, g.ny - 1 + k, col);
+            }
         }
+    }
+    if (halo)
+    {
+        halo->exchange(1, bed, 1, ng);
     }
 }
 
