@@ -1,0 +1,582 @@
+#include "mpiHalo.H"
+
+#include <climits>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+namespace sh
+{
+
+namespace
+{
+
+template<class Real> MPI_Datatype mpiType();
+template<> MPI_Datatype mpiType<double>() { return MPI_DOUBLE; }
+template<> MPI_Datatype mpiType<float>() { return MPI_FLOAT; }
+
+const char* sideName(int side)
+{
+    static const char* const names[4] = {"xMin", "xMax", "yMin", "yMax"};
+    return side >= 0 && side < 4 ? names[side] : "?";
+}
+
+//- The side across from side (xMin <-> xMax, yMin <-> yMax)
+int opposite(int side)
+{
+    return side ^ 1;
+}
+
+std::string mpiErrorString(int code)
+{
+    char text[MPI_MAX_ERROR_STRING];
+    int length = 0;
+    if (MPI_Error_string(code, text, &length) != MPI_SUCCESS || length <= 0)
+    {
+        return "MPI error code " + std::to_string(code);
+    }
+    return std::string(text, std::size_t(length));
+}
+
+//- The fields of a Subdomain sent by validate(), in this order
+constexpr int nSubFields = 10;
+
+void pack(const Subdomain& s, int* f)
+{
+    f[0] = s.nxWhole;
+    f[1] = s.nyWhole;
+    f[2] = s.i0;
+    f[3] = s.j0;
+    f[4] = s.nx;
+    f[5] = s.ny;
+    for (int side = 0; side < 4; ++side)
+    {
+        f[6 + side] = s.neighbour[side];
+    }
+}
+
+Subdomain unpack(const int* f)
+{
+    Subdomain s;
+    s.nxWhole = f[0];
+    s.nyWhole = f[1];
+    s.i0 = f[2];
+    s.j0 = f[3];
+    s.nx = f[4];
+    s.ny = f[5];
+    for (int side = 0; side < 4; ++side)
+    {
+        s.neighbour[side] = f[6 + side];
+    }
+    return s;
+}
+
+std::string describe(int rank, const Subdomain& s)
+{
+    return "rank " + std::to_string(rank) + " (" + std::to_string(s.nx)
+      + " x " + std::to_string(s.ny) + " cells at ("
+      + std::to_string(s.i0) + ", " + std::to_string(s.j0) + "))";
+}
+
+//- What is wrong with the split of all ranks' subdomains, "" if nothing
+std::string splitError(const std::vector<Subdomain>& subs)
+{
+    const int size = int(subs.size());
+    const int ng = Grid<double>::ng;
+    const Subdomain& first = subs[0];
+    if (first.nxWhole < 1 || first.nyWhole < 1)
+    {
+        return describe(0, first) + " names a whole grid of "
+          + std::to_string(first.nxWhole) + " x "
+          + std::to_string(first.nyWhole) + " cells";
+    }
+    for (int r = 0; r < size; ++r)
+    {
+        const Subdomain& s = subs[r];
+        if (s.nxWhole != first.nxWhole || s.nyWhole != first.nyWhole)
+        {
+            return describe(r, s) + " names a whole grid of "
+              + std::to_string(s.nxWhole) + " x " + std::to_string(s.nyWhole)
+              + " cells, rank 0 one of " + std::to_string(first.nxWhole)
+              + " x " + std::to_string(first.nyWhole);
+        }
+        if
+        (
+            s.nx < 1 || s.ny < 1 || s.i0 < 0 || s.j0 < 0
+         || s.i0 + s.nx > s.nxWhole || s.j0 + s.ny > s.nyWhole
+        )
+        {
+            return describe(r, s) + " does not lie in the whole grid of "
+              + std::to_string(s.nxWhole) + " x "
+              + std::to_string(s.nyWhole) + " cells";
+        }
+        for (int side = 0; side < 4; ++side)
+        {
+            const int m = s.neighbour[side];
+            if (m < 0)
+            {
+                continue;
+            }
+            const bool xSide = side == xMin || side == xMax;
+            const std::string here =
+                describe(r, s) + "'s " + sideName(side) + " neighbour";
+            if (m >= size)
+            {
+                return here + " is rank " + std::to_string(m)
+                  + ", beyond the " + std::to_string(size)
+                  + " ranks of the communicator";
+            }
+            if ((xSide ? s.nx : s.ny) < ng)
+            {
+                return describe(r, s) + " is narrower than the "
+                  + std::to_string(ng) + " ghost layers across its "
+                  + sideName(side) + " processor side";
+            }
+            const Subdomain& t = subs[m];
+            if (t.neighbour[opposite(side)] != r)
+            {
+                return here + " " + describe(m, t) + " names rank "
+                  + std::to_string(t.neighbour[opposite(side)])
+                  + " across its " + sideName(opposite(side)) + " side";
+            }
+            // The shared side: its length and where it starts along it
+            const int lengthHere = xSide ? s.ny : s.nx;
+            const int lengthThere = xSide ? t.ny : t.nx;
+            if (lengthHere != lengthThere)
+            {
+                return here + " " + describe(m, t) + " has "
+                  + std::to_string(lengthThere)
+                  + (xSide ? " rows" : " columns")
+                  + " along the shared side, rank " + std::to_string(r)
+                  + " has " + std::to_string(lengthHere);
+            }
+            if ((xSide ? s.j0 : s.i0) != (xSide ? t.j0 : t.i0))
+            {
+                return here + " " + describe(m, t)
+                  + " does not start the shared side at the same "
+                  + (xSide ? "row" : "column");
+            }
+            // Adjoining (across the whole grid's side where it wraps)
+            const int n = xSide ? s.nxWhole : s.nyWhole;
+            const int lo = xSide ? s.i0 : s.j0;
+            const int hi = lo + (xSide ? s.nx : s.ny);
+            const int tLo = xSide ? t.i0 : t.j0;
+            const int tHi = tLo + (xSide ? t.nx : t.ny);
+            const bool adjoins = (side == xMin || side == yMin)
+                ? tHi%n == lo%n
+                : hi%n == tLo%n;
+            if (!adjoins)
+            {
+                return here + " " + describe(m, t)
+                  + " does not adjoin it across that side";
+            }
+        }
+    }
+    return "";
+}
+
+} // namespace
+
+
+template<class Real>
+void MpiHalo<Real>::check(int code, const char* call)
+{
+    if (code != MPI_SUCCESS)
+    {
+        throw std::runtime_error
+        (
+            std::string("MpiHalo: ") + call + " failed: "
+          + mpiErrorString(code)
+        );
+    }
+}
+
+
+template<class Real>
+MpiHalo<Real>::MpiHalo(MPI_Comm comm, const Subdomain& s)
+:
+    sub_(s)
+{
+    int initialised = 0;
+    check(MPI_Initialized(&initialised), "MPI_Initialized");
+    if (!initialised)
+    {
+        throw std::runtime_error("MpiHalo: MPI is not initialised (MPI_Init)");
+    }
+    if (comm == MPI_COMM_NULL)
+    {
+        throw std::invalid_argument("MpiHalo: the communicator is MPI_COMM_NULL");
+    }
+    check(MPI_Comm_dup(comm, &comm_), "MPI_Comm_dup");
+    try
+    {
+        check
+        (
+            MPI_Comm_set_errhandler(comm_, MPI_ERRORS_RETURN),
+            "MPI_Comm_set_errhandler"
+        );
+        check(MPI_Comm_rank(comm_, &rank_), "MPI_Comm_rank");
+        check(MPI_Comm_size(comm_, &size_), "MPI_Comm_size");
+        validate();
+    }
+    catch (...)
+    {
+        MPI_Comm_free(&comm_);      // its own failure is not the news
+        comm_ = MPI_COMM_NULL;
+        throw;
+    }
+}
+
+
+template<class Real>
+MpiHalo<Real>::~MpiHalo()
+{
+    if (comm_ == MPI_COMM_NULL)
+    {
+        return;
+    }
+    // A destructor must not throw: a failure to free is ignored, and after
+    // MPI_Finalize the communicator is gone anyway
+    int finalised = 1;
+    if (MPI_Finalized(&finalised) == MPI_SUCCESS && !finalised)
+    {
+        MPI_Comm_free(&comm_);
+    }
+}
+
+
+template<class Real>
+void MpiHalo<Real>::validate() const
+{
+    int mine[nSubFields];
+    pack(sub_, mine);
+    std::vector<int> all(std::size_t(nSubFields)*size_);
+    check
+    (
+        MPI_Allgather
+        (
+            mine, nSubFields, MPI_INT, all.data(), nSubFields, MPI_INT, comm_
+        ),
+        "MPI_Allgather (the subdomains)"
+    );
+    std::vector<Subdomain> subs(size_);
+    for (int r = 0; r < size_; ++r)
+    {
+        subs[r] = unpack(all.data() + std::size_t(nSubFields)*r);
+    }
+    const std::string error = splitError(subs);
+    if (!error.empty())
+    {
+        throw std::runtime_error
+        (
+            "MpiHalo: the subdomains of the " + std::to_string(size_)
+          + " ranks do not fit together: " + error
+        );
+    }
+}
+
+
+template<class Real>
+void MpiHalo<Real>::exchange(int dir, Real* const* arrays, int n, int width)
+{
+    const int ng = Grid<Real>::ng;
+    if (dir != 0 && dir != 1)
+    {
+        throw std::invalid_argument
+        (
+            "MpiHalo::exchange: direction " + std::to_string(dir)
+          + " (0: x-sides, 1: y-sides)"
+        );
+    }
+    if (width < 1 || width > ng || n < 0 || (n > 0 && !arrays))
+    {
+        throw std::invalid_argument
+        (
+            "MpiHalo::exchange: width " + std::to_string(width) + " (1.."
+          + std::to_string(ng) + ") of " + std::to_string(n) + " arrays"
+        );
+    }
+    for (int a = 0; a < n; ++a)
+    {
+        if (!arrays[a])
+        {
+            throw std::invalid_argument
+            (
+                "MpiHalo::exchange: array " + std::to_string(a) + " is null"
+            );
+        }
+    }
+    const int first = 2*dir;            // xMin or yMin
+    if
+    (
+        n == 0
+     || (!sub_.processorSide(first) && !sub_.processorSide(first + 1))
+    )
+    {
+        return;
+    }
+
+    const int nx = sub_.nx;
+    const int ny = sub_.ny;
+    const int stride = nx + 2*ng;
+    const auto idx = [=](int i, int j)
+    {
+        return std::size_t(i + ng) + std::size_t(j + ng)*stride;
+    };
+    // Values per array: width columns of the interior rows, or width whole
+    // padded rows
+    const long long perArray =
+        (long long)(width)*(dir == 0 ? ny : stride);
+    const long long total = perArray*n;
+    if (total > INT_MAX)
+    {
+        throw std::runtime_error
+        (
+            "MpiHalo::exchange: a message of " + std::to_string(total)
+          + " values is beyond MPI's int count"
+        );
+    }
+    const int count = int(total);
+    const MPI_Datatype type = mpiType<Real>();
+
+    MPI_Request requests[4];
+    int sides[4];
+    int nRecv = 0;
+    int nReq = 0;
+    // Should posting fail half-way: no receive may be left to write into
+    // the buffers later (codes ignored, the first failure is the news)
+    const auto abandon = [&]()
+    {
+        for (int r = 0; r < nReq; ++r)
+        {
+            if (r < nRecv)
+            {
+                MPI_Cancel(&requests[r]);
+                MPI_Wait(&requests[r], MPI_STATUS_IGNORE);
+            }
+            else
+            {
+                MPI_Request_free(&requests[r]);
+            }
+        }
+    };
+    try
+    {
+        for (int side = first; side < first + 2; ++side)
+        {
+            if (!sub_.processorSide(side))
+            {
+                continue;
+            }
+            std::vector<Real>& buf = recv_[side];
+            if (buf.size() < std::size_t(count))
+            {
+                buf.resize(count);
+            }
+            check
+            (
+                MPI_Irecv
+                (
+                    buf.data(), count, type, sub_.neighbour[side], side, comm_,
+                    &requests[nRecv]
+                ),
+                "MPI_Irecv"
+            );
+            sides[nRecv++] = side;
+            nReq = nRecv;
+        }
+        for (int side = first; side < first + 2; ++side)
+        {
+            if (!sub_.processorSide(side))
+            {
+                continue;
+            }
+            std::vector<Real>& buf = send_[side];
+            if (buf.size() < std::size_t(count))
+            {
+                buf.resize(count);
+            }
+            Real* p = buf.data();
+            if (dir == 0)
+            {
+                const int i1 = side == xMin ? 0 : nx - width;
+                for (int a = 0; a < n; ++a)
+                {
+                    const Real* f = arrays[a];
+                    for (int j = 0; j < ny; ++j)
+                    {
+                        const Real* row = f + idx(i1, j);
+                        for (int k = 0; k < width; ++k)
+                        {
+                            *p++ = row[k];
+                        }
+                    }
+                }
+            }
+            else
+            {
+                const int j1 = side == yMin ? 0 : ny - width;
+                for (int a = 0; a < n; ++a)
+                {
+                    for (int k = 0; k < width; ++k)
+                    {
+                        std::memcpy
+                        (
+                            p, arrays[a] + idx(-ng, j1 + k), stride*sizeof(Real)
+                        );
+                        p += stride;
+                    }
+                }
+            }
+            // Tagged with the side at which it arrives
+            check
+            (
+                MPI_Isend
+                (
+                    buf.data(), count, type, sub_.neighbour[side],
+                    opposite(side), comm_, &requests[nReq]
+                ),
+                "MPI_Isend"
+            );
+            sides[nReq++] = side;
+        }
+    }
+    catch (...)
+    {
+        abandon();
+        throw;
+    }
+
+    MPI_Status statuses[4];
+    const int code = MPI_Waitall(nReq, requests, statuses);
+    if (code != MPI_SUCCESS)
+    {
+        std::string which = "MPI_Waitall";
+        if (code == MPI_ERR_IN_STATUS)
+        {
+            for (int r = 0; r < nReq; ++r)
+            {
+                const int e = statuses[r].MPI_ERROR;
+                if (e != MPI_SUCCESS && e != MPI_ERR_PENDING)
+                {
+                    throw std::runtime_error
+                    (
+                        std::string("MpiHalo: MPI_Waitall failed on the ")
+                      + (r < nRecv ? "receive from" : "send to") + " rank "
+                      + std::to_string(sub_.neighbour[sides[r]]) + " across "
+                      + sideName(sides[r]) + ": " + mpiErrorString(e)
+                    );
+                }
+            }
+        }
+        check(code, "MPI_Waitall");
+    }
+
+    for (int r = 0; r < nRecv; ++r)
+    {
+        const int side = sides[r];
+        int got = 0;
+        check(MPI_Get_count(&statuses[r], type, &got), "MPI_Get_count");
+        if (got != count)
+        {
+            throw std::runtime_error
+            (
+                "MpiHalo::exchange: " + std::to_string(got)
+              + " values from rank " + std::to_string(sub_.neighbour[side])
+              + " across " + sideName(side) + ", expected "
+              + std::to_string(count)
+            );
+        }
+        const Real* p = recv_[side].data();
+        if (dir == 0)
+        {
+            const int i1 = side == xMin ? -width : nx;
+            for (int a = 0; a < n; ++a)
+            {
+                Real* f = arrays[a];
+                for (int j = 0; j < ny; ++j)
+                {
+                    Real* row = f + idx(i1, j);
+                    for (int k = 0; k < width; ++k)
+                    {
+                        row[k] = *p++;
+                    }
+                }
+            }
+        }
+        else
+        {
+            const int j1 = side == yMin ? -width : ny;
+            for (int a = 0; a < n; ++a)
+            {
+                for (int k = 0; k < width; ++k)
+                {
+                    std::memcpy
+                    (
+                        arrays[a] + idx(-ng, j1 + k), p, stride*sizeof(Real)
+                    );
+                    p += stride;
+                }
+            }
+        }
+    }
+}
+
+
+template<class Real>
+Real MpiHalo<Real>::maxAll(Real x)
+{
+    Real r = x;
+    check
+    (
+        MPI_Allreduce(&x, &r, 1, mpiType<Real>(), MPI_MAX, comm_),
+        "MPI_Allreduce (MPI_MAX)"
+    );
+    return r;
+}
+
+
+template<class Real>
+double MpiHalo<Real>::sumAll(double x)
+{
+    double r = x;
+    check
+    (
+        MPI_Allreduce(&x, &r, 1, MPI_DOUBLE, MPI_SUM, comm_),
+        "MPI_Allreduce (MPI_SUM, double)"
+    );
+    return r;
+}
+
+
+template<class Real>
+long long MpiHalo<Real>::sumAll(long long x)
+{
+    long long r = x;
+    check
+    (
+        MPI_Allreduce(&x, &r, 1, MPI_LONG_LONG, MPI_SUM, comm_),
+        "MPI_Allreduce (MPI_SUM, long long)"
+    );
+    return r;
+}
+
+
+template<class Real>
+bool MpiHalo<Real>::anyAll(bool x)
+{
+    int v = x ? 1 : 0;
+    int r = v;
+    check
+    (
+        MPI_Allreduce(&v, &r, 1, MPI_INT, MPI_LOR, comm_),
+        "MPI_Allreduce (MPI_LOR)"
+    );
+    return r != 0;
+}
+
+
+template class MpiHalo<double>;
+template class MpiHalo<float>;
+
+} // namespace sh
