@@ -23,6 +23,18 @@ const Problem<Real>& checkedSubdomain(const Problem<Real>& pb, Halo<Real>* halo)
 {
     if (!halo)
     {
+        for (int side = 0; side < 4; ++side)
+        {
+            if (pb.bc.type[side] == BCType::processor)
+            {
+                throw std::invalid_argument
+                (
+                    "CpuSolver: the problem has a processor side (a"
+                    " subdomain) but no halo to exchange with its"
+                    " neighbours"
+                );
+            }
+        }
         return pb;
     }
     const Subdomain& s = halo->subdomain();
@@ -35,7 +47,9 @@ const Problem<Real>& checkedSubdomain(const Problem<Real>& pb, Halo<Real>* halo)
         ok = ok
          && s.processorSide(side) == (pb.bc.type[side] == BCType::processor);
     }
-    if (!ok)
+    // Collective, so that a mismatch on one rank stops all of them rather
+    // than leaving the others waiting in the first exchange
+    if (halo->anyAll(!ok))
     {
         throw std::invalid_argument
         (
@@ -43,6 +57,7 @@ const Problem<Real>& checkedSubdomain(const Problem<Real>& pb, Halo<Real>* halo)
           + " x " + std::to_string(pb.grid.ny) + " cells at ("
           + std::to_string(pb.grid.i0) + ", " + std::to_string(pb.grid.j0)
           + ")) or its processor sides are not the halo's subdomain"
+          + (ok ? std::string(" on another rank") : std::string())
         );
     }
     return pb;

@@ -101,7 +101,7 @@ void Problem<Real>::setInclination(const std::function<double(double)>& z)
     };
     for (int i = 0; i < grid.nx; ++i)
     {
-        const double x = double(grid.x0) + (i + 0.5)*dx;
+        const double x = double(grid.x0) + (grid.i0 + i + 0.5)*dx;
         const double zx = angle(x);
         zeta[i] = Real(zx);
         kappa[i] = Real(-(angle(x + 0.5*dx) - angle(x - 0.5*dx))/dx);
@@ -112,6 +112,14 @@ void Problem<Real>::setInclination(const std::function<double(double)>& z)
 template<class Real>
 void Problem<Real>::setImpingingJet(const JetInput& in)
 {
+    if (grid.i0 != 0 || grid.j0 != 0)
+    {
+        throw std::logic_error
+        (
+            "Problem::setImpingingJet on a subdomain: set the jet on the"
+            " whole problem, then cut the subdomain out (subProblem)"
+        );
+    }
     const auto num = numberString;
     // Beyond 1e30 the jet's state (R^2, R_imp^2, h u_jet) overflows, as
     // every other input (modelInput.C)
@@ -226,10 +234,16 @@ int Problem<Real>::imposeJet()
     {
         return 0;
     }
+    // The jet's cells of this grid (on a subdomain, parallel/halo.H, its
+    // ranges are the whole grid's shifted and may reach beyond it)
     int inside = 0;
-    for (int jj = j.jMin; jj <= j.jMax; ++jj)
+    const int jLo = std::max(j.jMin, 0);
+    const int jHi = std::min(j.jMax, grid.ny - 1);
+    const int iLo = std::max(j.iMin, 0);
+    const int iHi = std::min(j.iMax, grid.nx - 1);
+    for (int jj = jLo; jj <= jHi; ++jj)
     {
-        for (int i = j.iMin; i <= j.iMax; ++i)
+        for (int i = iLo; i <= iHi; ++i)
         {
             State<Real> q;
             if (!jetState(j, grid, i, jj, q))

@@ -113,6 +113,27 @@ std::string splitError(const std::vector<Subdomain>& subs)
         for (int side = 0; side < 4; ++side)
         {
             const int m = s.neighbour[side];
+            if (m >= size)
+            {
+                return describe(r, s) + "'s " + sideName(side)
+                  + " neighbour is rank " + std::to_string(m)
+                  + ", beyond the " + std::to_string(size)
+                  + " ranks of the communicator";
+            }
+            // A side without a neighbour is a side of the whole grid, and
+            // a side of the whole grid has none (no periodic wrap)
+            const bool onEdge =
+                side == xMin ? s.i0 == 0
+              : side == xMax ? s.i0 + s.nx == s.nxWhole
+              : side == yMin ? s.j0 == 0
+              : s.j0 + s.ny == s.nyWhole;
+            if ((m < 0) != onEdge)
+            {
+                return describe(r, s) + "'s " + sideName(side) + " side "
+                  + (onEdge
+                    ? "is a side of the whole grid but names a neighbour"
+                    : "lies inside the whole grid but names no neighbour");
+            }
             if (m < 0)
             {
                 continue;
@@ -120,12 +141,6 @@ std::string splitError(const std::vector<Subdomain>& subs)
             const bool xSide = side == xMin || side == xMax;
             const std::string here =
                 describe(r, s) + "'s " + sideName(side) + " neighbour";
-            if (m >= size)
-            {
-                return here + " is rank " + std::to_string(m)
-                  + ", beyond the " + std::to_string(size)
-                  + " ranks of the communicator";
-            }
             if ((xSide ? s.nx : s.ny) < ng)
             {
                 return describe(r, s) + " is narrower than the "
@@ -157,20 +172,33 @@ std::string splitError(const std::vector<Subdomain>& subs)
                   + (xSide ? "row" : "column");
             }
             // Adjoining (across the whole grid's side where it wraps)
-            const int n = xSide ? s.nxWhole : s.nyWhole;
             const int lo = xSide ? s.i0 : s.j0;
             const int hi = lo + (xSide ? s.nx : s.ny);
             const int tLo = xSide ? t.i0 : t.j0;
             const int tHi = tLo + (xSide ? t.nx : t.ny);
             const bool adjoins = (side == xMin || side == yMin)
-                ? tHi%n == lo%n
-                : hi%n == tLo%n;
+                ? tHi == lo
+                : hi == tLo;
             if (!adjoins)
             {
                 return here + " " + describe(m, t)
                   + " does not adjoin it across that side";
             }
         }
+    }
+    // The parts cover the whole grid once: their cells add up to it (with
+    // the sides checked above, rectangles that adjoin their neighbours
+    // along whole sides and reach the grid's edges cannot overlap then)
+    long long cells = 0;
+    for (const Subdomain& s : subs)
+    {
+        cells += (long long)s.nx*s.ny;
+    }
+    if (cells != (long long)first.nxWhole*first.nyWhole)
+    {
+        return "the parts hold " + std::to_string(cells) + " cells, the"
+            " whole grid " + std::to_string(first.nxWhole) + " x "
+          + std::to_string(first.nyWhole);
     }
     return "";
 }

@@ -114,10 +114,20 @@ Problem<Real> subProblem(const Problem<Real>& whole, const Subdomain& s)
     cut(whole.hv, p.hv);
     const auto cutIfGiven = [&](const auto& w, auto& out)
     {
-        if (!w.empty())
+        if (w.empty())
         {
-            cut(w, out);
+            return;
         }
+        if (w.size() != std::size_t(G.nx)*G.ny)
+        {
+            throw std::invalid_argument
+            (
+                "subProblem: a hazard map of the whole problem has "
+                + std::to_string(w.size()) + " cells, the grid "
+                + std::to_string(std::size_t(G.nx)*G.ny)
+            );
+        }
+        cut(w, out);
     };
     cutIfGiven(whole.peaks.h, p.peaks.h);
     cutIfGiven(whole.peaks.speed, p.peaks.speed);
