@@ -18,16 +18,20 @@
 #       - release polygons (a rotated quadrilateral, a triangle): volume
 #         within one cell area x thickness of the analytic one, thickness
 #         normal (h A / cos 35) and vertical (d A); the same polygon as a
-#         shapefile gives the same volume;
+#         shapefile gives the same volume; a vertical thickness at the
+#         DEM's edge (the tilted plane), h = f cos(theta) to 1e-9;
 #       - hazardMaps after a short run: its .asc and .tif rasters read back
 #         by GDAL (gdalinfo) with the DEM's size, geotransform and nodata,
 #         the hMax raster's maximum that of the field; report.dat with
 #         every key and finite values, releasedVolume that of terrainToCase;
 #       - bad input (no DEM, unknown raster format, axis leaving the DEM,
 #         axis of zero length, mesh wider than the DEM, a nodata hole under
-#         the mesh, a release outside the mesh, unknown keywords and
-#         choices): non-zero exit, FOAM FATAL IO ERROR naming terrainDict and
-#         the keyword, and no file written or changed;
+#         the mesh, the normal from the reference surface leaving the DEM
+#         before it meets the terrain, an infinite elevation in the DEM, a
+#         release outside the mesh, unknown keywords and choices): non-zero
+#         exit by exit(), not by a signal, FOAM FATAL IO ERROR naming
+#         terrainDict and the keyword, no stack trace, and no file written
+#         or changed (no 0/);
 #       - release rasters on a grid of their own (3 m pixels, a thickness
 #         ramp): volume that of the pixels, vertical (sum d A) and normal
 #         (sum d A / cos 35), within one cell area x thickness and, a plane
@@ -75,8 +79,10 @@ cp "$project"/tutorials/inclinedPlane/constant/transportProperties \
 # DEMs: plane (35 deg down X), tilted (and 10 deg up Y), hole (nodata under
 # the mesh), steep and gentle (tilted up Y so that zb's slope across is 0.55
 # and 0.45; 320 m wide in X, from 960, as the normal from the mesh's first
-# cells reaches X < 1000 where zb is -22 m), each .asc with full precision;
-# .tif through gdal_translate
+# cells reaches X < 1000 where zb is -22 m), steepEdge (steep on the 240 m
+# from X = 1000: that normal leaves the DEM, refused in section 6), each
+# .asc with full precision; infinite (the plane with an elevation inf,
+# refused); .tif through gdal_translate
 $python - "$work/dem" <<'PYEOF'
 import math, sys
 out = sys.argv[1]
@@ -99,8 +105,12 @@ write("hole", lambda X, Y: -9999 if abs(X - 1100) < 6 and abs(Y - 5090) < 6
 for name, g in [("steep", 0.55), ("gentle", 0.45)]:
     t = g/math.cos(math.radians(35))
     write(name, lambda X, Y, t=t: plane(X, Y) + t*(Y - 5080), nx=160, x0=960.0)
+t = 0.55/math.cos(math.radians(35))
+write("steepEdge", lambda X, Y: plane(X, Y) + t*(Y - 5080))
+write("infinite", lambda X, Y: math.inf if abs(X - 1100) < 2 and abs(Y - 5090) < 2
+      else plane(X, Y))
 PYEOF
-[ $? -eq 0 ] || fail "writing the DEMs plane.asc, tilted.asc, hole.asc, steep.asc, gentle.asc"
+[ $? -eq 0 ] || fail "writing the DEMs plane.asc, tilted.asc, hole.asc, steep.asc, gentle.asc, steepEdge.asc, infinite.asc"
 gdal_translate -q --config AAIGRID_DATATYPE Float64 -ot Float64 "$work/dem/plane.asc" "$work/dem/plane.tif" \
     || fail "gdal_translate plane.asc plane.tif"
 cp "$work/dem"/*.asc "$work/dem"/*.tif "$work/base/constant/" \
@@ -322,6 +332,24 @@ writeTerrainDict "$c" constant/plane.asc vertical normal
 volumeCheck "$c" r1 "2*800" 50 "quadrilateral, thickness 2 m vertical"
 volumeCheck "$c" r2 "1*600/$cos35" 25 "triangle, thickness 1 m normal"
 
+# Vertical thickness at the DEM's edge: the tilted plane, the mesh reaching
+# to within a pixel of where the DEM has values (halfWidth 80: the bed
+# points of the first and last rows of cells at Y = 5002.5 and 5157.5, the
+# values from 5001 to 5159), a rectangle X in [1040, 1100], Y in [5001,
+# 5159] of vertical thickness 1: h = f cos(theta), f the cell's area
+# covered (0.8 in those rows, 1 between), cos(theta) = 1/sqrt(1 + tan^2 35
+# + tan^2 10), the slope across one-sided in those rows (taken as 0 there
+# before: h 0.8 cos 35), exact on a plane
+if runCase vertical-edge "sed -i 's#constant/plane.asc#constant/tilted.asc#; s#halfWidth       40#halfWidth       80#; s#((1040 5080) (1060 5060) (1080 5080) (1060 5100) (1050 5090))#((1040 5001) (1100 5001) (1100 5159) (1040 5159))#; s#thickness   2#thickness   1#; s#thicknessDirection normal#thicknessDirection vertical#; /^    r2/,/^    }/d' system/terrainDict"
+then
+    if msg="$(fieldCheck "$c" '(lambda h, ct: (lambda e0, e1, e: (max(e0, e1, e) < 1e-9, "max h in the first row of cells %.12g, in the last %.12g, over all %.12g; 0.8 cos(theta) = %.12g, cos(theta) = %.12g" % (max(h[:nx]), max(h[-nx:]), max(h), 0.8*ct, ct)))(abs(max(h[:nx]) - 0.8*ct), abs(max(h[-nx:]) - 0.8*ct), abs(max(h) - ct)))(field("h"), 1/math.sqrt(1 + math.tan(math.radians(35))**2 + math.tan(math.radians(10))**2))')"
+    then
+        pass "vertical thickness at the DEM's edge (slope one-sided there): $msg"
+    else
+        fail "vertical thickness at the DEM's edge: $msg"
+    fi
+fi
+
 # The quadrilateral as a shapefile (written through ogr2ogr from GeoJSON)
 c="$(newCase shapefile)"
 cat > "$c/constant/release.geojson" <<'EOD'
@@ -409,7 +437,8 @@ else
 fi
 
 # -- 6. Bad input -----------------------------------------------------------------
-#- expectRefusal <name> <keyword> <sed script on terrainDict | -> [<command>]
+#- expectRefusal <name> <keyword> <sed script on terrainDict | -> [<command>
+#  ("" for none) [<regex the log must hold>]]
 expectRefusal()
 {
     local name="$1" keyword="$2" edit="$3"
@@ -429,11 +458,17 @@ expectRefusal()
     local log="$c/log.terrainToCase"
     local problems=""
     [ $rc -ne 0 ] || problems="$problems exit 0;"
+    [ $rc -lt 128 ] || problems="$problems killed by signal $((rc - 128));"
     grep -q "FOAM FATAL IO ERROR" "$log" || problems="$problems no FOAM FATAL IO ERROR;"
     grep -q "terrainDict" "$log" || problems="$problems terrainDict not named;"
     grep -q "$keyword" "$log" || problems="$problems keyword $keyword not named;"
-    grep -q "stack\|Segmentation" "$log" && problems="$problems stack trace;"
+    [ $# -lt 5 ] || grep -q "$5" "$log" || problems="$problems no '$5' in the log;"
+    # (OpenFOAM's banner says "trapFpe: Floating point exception trapping")
+    grep -v '^trapFpe:' "$log" \
+        | grep -q "stack\|Segmentation\|sigFpe\|^#0 \|Floating point exception" \
+        && problems="$problems stack trace;"
     [ "$before" = "$after" ] || problems="$problems files written;"
+    [ ! -e "$c/0" ] || problems="$problems 0/ made;"
     if [ -z "$problems" ]
     then
         pass "refused, $name: $(grep -m1 -A1 'FOAM FATAL IO ERROR' "$log" | tail -n1 | cut -c1-150)"
@@ -451,6 +486,13 @@ expectRefusal "axis of zero length" "'axis'" 's#((1010 5080) (1200 5080))#((1010
 expectRefusal "axis of one point" "'axis'" 's#((1010 5080) (1200 5080))#((1010 5080))#'
 expectRefusal "mesh wider than the DEM" "'halfWidth'" 's#halfWidth       40#halfWidth       100#'
 expectRefusal "nodata hole under the mesh" "'dem'" 's#constant/plane.asc#constant/hole.asc#'
+# The steep DEM from X = 1000: the normal from the mesh's first cells (zb
+# about -22 m) reaches X < 1000 (it crashed with SIGFPE, or called that a
+# nodata hole)
+expectRefusal "normal leaving the DEM" "'dem'" 's#constant/plane.asc#constant/steepEdge.asc#' "" \
+    "the normal from the reference surface at x = .* leaves the DEM .*steepEdge.asc"
+expectRefusal "infinite DEM elevation" "'dem'" 's#constant/plane.asc#constant/infinite.asc#' "" \
+    "infinite.asc\" holds the elevation inf"
 expectRefusal "release outside the mesh" "'polygon'" 's#(1100 5060) (1130 5060) (1115 5100)#(1100 5060) (1130 5060) (1115 5150)#'
 expectRefusal "release without shape" "'polygon'" 's#polygon     ((1100 5060) (1130 5060) (1115 5100));##'
 expectRefusal "missing release shapefile" "'file'" 's#polygon     ((1100 5060) (1130 5060) (1115 5100));#file "constant/none.shp";#'

@@ -151,11 +151,51 @@ void Raster::pixel(double X, double Y, double& c, double& r) const
 }
 
 
+// A NaN X or Y must not reach the ordered comparisons below: OpenFOAM's
+// applications trap FE_INVALID (FOAM_SIGFPE), which they raise for NaN
 bool Raster::covers(double X, double Y) const
 {
+    if (!(std::isfinite(X) && std::isfinite(Y)))
+    {
+        return false;
+    }
     double c = 0, r = 0;
     pixel(X, Y, c, r);
     return c >= 0 && r >= 0 && c <= nx && r <= ny;
+}
+
+
+bool Raster::sampled(double X, double Y) const
+{
+    if (!(std::isfinite(X) && std::isfinite(Y)))
+    {
+        return false;
+    }
+    double fi = 0, fj = 0;
+    pixel(X, Y, fi, fj);
+    fi -= 0.5;
+    fj -= 0.5;
+    return fi >= 0 && fj >= 0 && fi <= nx - 1 && fj <= ny - 1;
+}
+
+
+std::array<double, 4> Raster::sampledBounds() const
+{
+    std::array<double, 4> b
+    {
+        std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(),
+        std::numeric_limits<double>::max(), -std::numeric_limits<double>::max()
+    };
+    for (int k = 0; k < 4; ++k)
+    {
+        const std::array<double, 2> P =
+            point(k % 2 ? nx - 0.5 : 0.5, k/2 ? ny - 0.5 : 0.5);
+        b[0] = std::min(b[0], P[0]);
+        b[1] = std::max(b[1], P[0]);
+        b[2] = std::min(b[2], P[1]);
+        b[3] = std::max(b[3], P[1]);
+    }
+    return b;
 }
 
 
@@ -187,7 +227,11 @@ std::array<double, 4> Raster::bounds() const
 double Raster::value(double X, double Y) const
 {
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    // Fractional pixel-centre coordinates
+    if (!(std::isfinite(X) && std::isfinite(Y)))
+    {
+        return nan;
+    }
+    // Fractional pixel-centre coordinates (as sampled() tests them)
     double fi = 0, fj = 0;
     pixel(X, Y, fi, fj);
     fi -= 0.5;
@@ -205,6 +249,15 @@ double Raster::value(double X, double Y) const
     const double z00 = at(i, j), z10 = at(i1, j);
     const double z01 = at(i, j1), z11 = at(i1, j1);
     if (!(valid(z00) && valid(z10) && valid(z01) && valid(z11)))
+    {
+        return nan;
+    }
+    // An infinite pixel (not nodata) would make 0*inf: NaN, FE_INVALID
+    if
+    (
+        !(std::isfinite(z00) && std::isfinite(z10)
+       && std::isfinite(z01) && std::isfinite(z11))
+    )
     {
         return nan;
     }

@@ -71,13 +71,17 @@ Description
     Warns, with figures, where |grad zb| is large (the shallow-flow model's
     bed is the reference surface; a steep zb strains it).  Every input is
     checked before anything is written: a missing DEM, an unknown raster
-    format, an axis of zero length or leaving the DEM, a mesh over nodata,
-    a release outside the mesh, a release raster that cannot be read, with
-    a negative, NaN or infinite thickness, without a thickness > 0 or
-    without overlap with the mesh, a coordinate transformation that cannot
-    be built stop it with FOAM FATAL IO ERROR naming the file and the
-    keyword, and nothing is written.  A release raster reaching beyond the
-    mesh is a warning with the volume left out.
+    format, a DEM with an infinite elevation, an axis of zero length or
+    leaving the DEM, a mesh over nodata or off the DEM, a normal from the
+    reference surface (along which zb is measured) leaving the DEM or
+    meeting nodata before it meets the terrain, a release outside the mesh,
+    too few DEM values around a cell for the slope a vertical thickness
+    needs, a release raster that cannot be read, with a negative, NaN or
+    infinite thickness, without a thickness > 0 or without overlap with the
+    mesh, a coordinate transformation that cannot be built stop it with
+    FOAM FATAL IO ERROR naming the file and the keyword, and nothing is
+    written.  A release raster reaching beyond the mesh is a warning with
+    the volume left out.
 
 Usage
     terrainToCase [-dict file]
@@ -336,10 +340,37 @@ int main(int argc, char *argv[])
         FatalIOErrorInFunction(dict)
             << "keyword 'dem': " << e.what() << nl << exit(FatalIOError);
     }
+    // Elevations finite where not nodata (NaN pixels count as nodata)
+    for (int j = 0; j < dem.ny; ++j)
+    {
+        for (int i = 0; i < dem.nx; ++i)
+        {
+            const double v = dem.at(i, j);
+            if (dem.valid(v) && !std::isfinite(v))
+            {
+                const std::array<double, 2> P = dem.point(i + 0.5, j + 0.5);
+                FatalIOErrorInFunction(dict)
+                    << "keyword 'dem': " << demFile << " holds the elevation "
+                    << v << " at pixel (" << i << ", " << j << ") (X = "
+                    << P[0] << ", Y = " << P[1] << "): elevations must be"
+                    << " finite (nodata: the raster's nodata value or NaN)"
+                    << nl << exit(FatalIOError);
+            }
+        }
+    }
     const double pixel = dem.pixelSize();
     const std::array<double, 4> demBox = dem.bounds();
     const double demX0 = demBox[0], demX1 = demBox[1];
     const double demY0 = demBox[2], demY1 = demBox[3];
+    // Where the DEM has values: between its outermost pixel centres
+    const std::array<double, 4> valueBox = dem.sampledBounds();
+    std::ostringstream valueExtent;
+    valueExtent
+        << "its values (bilinear between pixel centres) reach X in ["
+        << valueBox[0] << ", " << valueBox[1] << "], Y in [" << valueBox[2]
+        << ", " << valueBox[3] << "]"
+        << (dem.northUp() ? "" : " (rotated; their bounding box)")
+        << ", half a pixel inside its outline";
     Info<< "DEM " << demFile << ": " << dem.nx << " x " << dem.ny
         << " pixels of " << std::hypot(dem.gt[1], dem.gt[4]) << " x "
         << std::hypot(dem.gt[2], dem.gt[5]) << " m, "
@@ -439,6 +470,96 @@ int main(int argc, char *argv[])
         << "]" << nl;
 
     // -- zb at the cell centres ---------------------------------------------
+    // FatalIOError for the cell at (x, y) where offset() found no zb, with
+    // zNoValue, the offset along the normal of the point with no DEM value
+    const auto zbFailure = [&](double x, double y, double zNoValue)
+    {
+        const terrain::vec3 W = surface.world(x, y, 0);
+        if (zNoValue == 0)
+        {
+            const bool inside = dem.sampled(W[0], W[1]);
+            FatalIOErrorInFunction(dict)
+                << "keyword '" << (inside ? "dem" : "halfWidth")
+                << "': the mesh cell at x = " << x << ", y = " << y
+                << " (world X = " << W[0] << ", Y = " << W[1] << ") "
+                << (inside
+                    ? "lies over a nodata hole of the DEM "
+                    : "lies outside the DEM ")
+                << demFile << "; " << valueExtent.str().c_str() << nl
+                << "(the mesh spans the axis' profile and +-halfWidth)"
+                << nl << exit(FatalIOError);
+        }
+        if (!std::isfinite(zNoValue))
+        {
+            FatalIOErrorInFunction(dict)
+                << "keyword 'dem': the offset of the DEM " << demFile
+                << " from the reference surface along its normal at x = "
+                << x << ", y = " << y << " (world X = " << W[0] << ", Y = "
+                << W[1] << ") was not found: the secant iteration did not"
+                << " converge there" << nl << exit(FatalIOError);
+        }
+        const terrain::vec3 E = surface.world(x, y, zNoValue);
+        if (dem.sampled(E[0], E[1]))
+        {
+            FatalIOErrorInFunction(dict)
+                << "keyword 'dem': the normal from the reference surface at"
+                << " x = " << x << ", y = " << y << " (world X = " << W[0]
+                << ", Y = " << W[1] << ") meets a nodata hole of the DEM "
+                << demFile << " at X = " << E[0] << ", Y = " << E[1]
+                << " (" << zNoValue << " m along it) before it meets the"
+                << " terrain: fill the DEM's nodata there" << nl
+                << exit(FatalIOError);
+        }
+        // The normal runs along the axis in plan (N = (sin zeta t, cos
+        // zeta)); the terrain's vertical distance from the reference
+        // surface here and on the axis at this x
+        const double gap = W[2] - dem.value(W[0], W[1]);
+        const terrain::vec3 A = surface.world(x, 0, 0);
+        const double gapAxis = A[2] - dem.value(A[0], A[1]);
+        const double along =
+            (E[0] - W[0])*surface.tX() + (E[1] - W[1])*surface.tY();
+        const bool back = along < 0;
+        // (both gaps finite: offset() and the axis' check sampled them);
+        // in mm
+        const auto mm = [](double v) { return std::round(1000*v)/1000; };
+        std::ostringstream gapText;
+        if (std::isfinite(gap))
+        {
+            gapText << "The terrain lies " << mm(std::fabs(gap)) << " m "
+                << (mm(gap) >= 0 ? "below" : "above")
+                << " the reference surface there (vertically";
+            if (std::isfinite(gapAxis))
+            {
+                gapText << ", " << mm(std::fabs(gapAxis)) << " m "
+                    << (mm(gapAxis) >= 0 ? "below" : "above")
+                    << " it on the axis at this x";
+            }
+            gapText << "), and the";
+        }
+        else
+        {
+            gapText << "The";
+        }
+        FatalIOErrorInFunction(dict)
+            << "keyword 'dem': the normal from the reference surface at"
+            << " x = " << x << ", y = " << y << " (world X = " << W[0]
+            << ", Y = " << W[1] << ") leaves the DEM " << demFile
+            << " at X = " << E[0] << ", Y = " << E[1] << " (" << zNoValue
+            << " m along it, " << std::fabs(along) << " m in plan towards"
+            << " the axis' " << (back ? "first" : "last") << " point)"
+            << " without meeting the terrain; "
+            << valueExtent.str().c_str() << "." << nl
+            << gapText.str().c_str()
+            << " normal, along which zb is measured, runs along the axis in"
+            << " plan.  A DEM reaching further beyond the axis' "
+            << (back ? "first" : "last") << " point, an axis that "
+            << (back ? "begins" : "ends") << " further inside the DEM, or"
+            << " less departure of the terrain from the reference surface"
+            << " there (a smaller halfWidth where it comes from the terrain"
+            << " across the axis, a smaller profileSmoothing where it comes"
+            << " from the profile along it) keep the normal on the DEM."
+            << nl << exit(FatalIOError);
+    };
     const label nCells = nx*ny;
     scalarField zb(nCells);
     for (label j = 0; j < ny; ++j)
@@ -447,21 +568,11 @@ int main(int argc, char *argv[])
         {
             const double x = (i + 0.5)*cellSize;
             const double y = -yMax + (j + 0.5)*cellSize;
-            const double z = surface.offset(x, y, elevation);
+            double zNoValue = 0;
+            const double z = surface.offset(x, y, elevation, &zNoValue);
             if (!std::isfinite(z))
             {
-                const terrain::vec3 W = surface.world(x, y, 0);
-                const bool inside = dem.covers(W[0], W[1]);
-                FatalIOErrorInFunction(dict)
-                    << "keyword '" << (inside ? "dem" : "halfWidth")
-                    << "': the mesh cell at x = " << x << ", y = " << y
-                    << " (world X = " << W[0] << ", Y = " << W[1] << ") "
-                    << (inside
-                        ? "lies over a nodata hole of the DEM "
-                        : "lies outside the DEM ")
-                    << demFile << nl
-                    << "(the mesh spans the axis' profile and +-halfWidth)"
-                    << nl << exit(FatalIOError);
+                zbFailure(x, y, zNoValue);
             }
             zb[i + nx*j] = z;
         }
@@ -665,17 +776,49 @@ int main(int argc, char *argv[])
         releases.push_back(std::move(r));
     }
 
-    // Cos of the DEM's slope at a cell's bed point (vertical thickness)
-    const auto cosSlope = [&](label c)
+    // Cos of the DEM's slope at a cell's bed point (vertical thickness of
+    // release r): central differences over a pixel, one-sided where one
+    // side has no value (the DEM's edge, nodata); FatalIOError where
+    // neither has
+    const auto cosSlope = [&](label c, const release& r)
     {
         const double x = (c % nx + 0.5)*cellSize;
         const double y = -yMax + (c/nx + 0.5)*cellSize;
         const terrain::vec3 W = surface.world(x, y, zb[c]);
         const double d = pixel;
-        double gx = (dem.value(W[0] + d, W[1]) - dem.value(W[0] - d, W[1]))/(2*d);
-        double gy = (dem.value(W[0], W[1] + d) - dem.value(W[0], W[1] - d))/(2*d);
-        if (!std::isfinite(gx)) { gx = 0; }
-        if (!std::isfinite(gy)) { gy = 0; }
+        const double Zc = dem.value(W[0], W[1]);
+        const auto slope = [&](double dX, double dY)
+        {
+            const double zp = dem.value(W[0] + dX, W[1] + dY);
+            const double zm = dem.value(W[0] - dX, W[1] - dY);
+            if (std::isfinite(zp) && std::isfinite(zm))
+            {
+                return (zp - zm)/(2*d);
+            }
+            if (std::isfinite(zp) && std::isfinite(Zc))
+            {
+                return (zp - Zc)/d;
+            }
+            if (std::isfinite(zm) && std::isfinite(Zc))
+            {
+                return (Zc - zm)/d;
+            }
+            return std::numeric_limits<double>::quiet_NaN();
+        };
+        const double gx = slope(d, 0);
+        const double gy = slope(0, d);
+        if (!(std::isfinite(gx) && std::isfinite(gy)))
+        {
+            FatalIOErrorInFunction(*r.dict)
+                << "keyword 'thicknessDirection' of release " << r.name
+                << ": the DEM " << demFile << " has too few values around"
+                << " the bed point (X = " << W[0] << ", Y = " << W[1]
+                << ") of the mesh cell at x = " << x << ", y = " << y
+                << " for its slope there (a pixel either side in X and in"
+                << " Y: nodata or the DEM's edge), which a vertical"
+                << " thickness needs; " << valueExtent.str().c_str() << nl
+                << exit(FatalIOError);
+        }
         return 1/std::sqrt(1 + gx*gx + gy*gy);
     };
 
@@ -709,27 +852,43 @@ int main(int argc, char *argv[])
                         const double Y = a[1] + f*(b[1] - a[1]);
                         const double Z = dem.value(X, Y);
                         double x = 0, y = 0, z = 0;
-                        const bool ok = std::isfinite(Z)
-                            && surface.local({X, Y, Z}, x, y, z);
+                        const bool onDem = std::isfinite(Z);
+                        const bool ok =
+                            onDem && surface.local({X, Y, Z}, x, y, z);
                         if
                         (
                             !ok || x < -1e-9*xMax || x > xMax*(1 + 1e-9)
                          || std::fabs(y) > yMax*(1 + 1e-9)
                         )
                         {
+                            std::ostringstream why;
+                            if (!onDem)
+                            {
+                                why << (dem.sampled(X, Y)
+                                    ? "over a nodata hole of the DEM \""
+                                    : "outside the DEM \"")
+                                    << demFile.c_str() << "\"; "
+                                    << valueExtent.str();
+                            }
+                            else if (!ok)
+                            {
+                                why << "where its foot on the reference"
+                                    << " surface was not found (the Newton"
+                                    << " iteration did not converge)";
+                            }
+                            else
+                            {
+                                why << "(x = " << x << ", y = " << y
+                                    << ") outside the mesh, x in [0, "
+                                    << xMax << "], y in [" << -yMax << ", "
+                                    << yMax << "]";
+                            }
                             FatalIOErrorInFunction(*r.dict)
                                 << "keyword '" << r.shapeKey
                                 << "' of release " << r.name
                                 << ": the release outline passes (X = "
                                 << X << ", Y = " << Y << ") "
-                                << (std::isfinite(Z)
-                                    ? "(x = " + std::to_string(x) + ", y = "
-                                      + std::to_string(y) + ") outside the"
-                                      " mesh, x in [0, "
-                                      + std::to_string(xMax) + "], y in [-"
-                                      + std::to_string(yMax) + ", "
-                                      + std::to_string(yMax) + "]"
-                                    : std::string("outside the DEM")).c_str()
+                                << why.str().c_str()
                                 << nl << exit(FatalIOError);
                         }
                         xy.push_back({x, y});
@@ -805,7 +964,7 @@ int main(int argc, char *argv[])
         {
             if (d[c] > 0)
             {
-                const scalar hc = d[c]*(r.vertical ? cosSlope(c) : 1);
+                const scalar hc = d[c]*(r.vertical ? cosSlope(c, r) : 1);
                 h[c] += hc;
                 volume += hc*cellArea;
             }
