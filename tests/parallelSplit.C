@@ -18,6 +18,13 @@
         whole problem's condition and inflow state on the others;
       - the jet's cell ranges moved by the offset;
       - a subdomain that does not fit the whole grid refused.
+    A part built on its own, as a decomposed application builds it (the
+    Problem constructor of a Subdomain, its inclination and its jet, no
+    whole arrays), for every part of 2x2, 3x1 and 1x3 splits of a jet on
+    an inclination varying with x: grid, zeta, kappa, the jet's state and
+    parameters bit for bit those of the part cut out of the whole; the
+    parts' jet cells add up to the whole's; a part without jet cells is
+    not refused.
 \*---------------------------------------------------------------------------*/
 
 #include "parallelCases.H"
@@ -261,6 +268,65 @@ void subProblems(Counter& t)
     t.check(refusedOther, std::string("a part of another grid refused, ") + prec);
 }
 
+//- A part built on its own equals the part cut out of the whole
+template<class Real>
+void directParts(Counter& t)
+{
+    const char* prec = sizeof(Real) == 8 ? "double" : "float";
+    std::printf("\nparts built on their own, %s\n", prec);
+    const double x0 = -0.1, x1 = 0.3, y0 = -0.1, y1 = 0.1;
+    const int nx = 48, ny = 24;
+    const Params<Real> params = makeParams<Real>(ModelInput());
+    const auto zetaOfX = [](double x) { return 0.4 + 0.5*x; };
+    JetInput jet;
+    jet.xc = 0.1;
+    jet.yc = 0;
+    jet.R = 7.5e-3;
+    jet.rImp = 2*jet.R;
+    jet.uJet = 0.99;
+    jet.zeta = zetaOfX(jet.xc);
+    Problem<Real> w(params, nx, ny, x0, x1, y0, y1);
+    w.bc.type[xMin] = BCType::wall;
+    w.setInclination(zetaOfX);
+    const int wholeCells = w.setImpingingJet(jet);
+    for (const int split : {22, 31, 13})
+    {
+        const int px = split/10;
+        const int py = split%10;
+        bool ok = true;
+        int cells = 0;
+        for (int r = 0; r < px*py; ++r)
+        {
+            const Subdomain s = splitGrid(nx, ny, px, py, r);
+            const Problem<Real> q = subProblem(w, s);
+            Problem<Real> p(params, s, x0, x1, y0, y1);
+            for (int side = 0; side < 4; ++side)
+            {
+                if (!s.processorSide(side))
+                {
+                    p.bc.type[side] = w.bc.type[side];
+                }
+            }
+            p.setInclination(zetaOfX);
+            cells += p.setImpingingJet(jet);
+            ok = ok && sameBits(p.grid, q.grid) && p.zeta == q.zeta
+              && p.kappa == q.kappa && p.h == q.h && p.hu == q.hu
+              && p.hv == q.hv && sameBits(p.params.jet, q.params.jet)
+              && p.wholeNx == nx && p.wholeNy == ny && p.isPart()
+              && sameBits(p.bc.type, q.bc.type);
+        }
+        t.check
+        (
+            ok && cells == wholeCells && wholeCells > 0,
+            std::string("jet on an inclination, ") + prec + ", split "
+          + std::to_string(px) + "x" + std::to_string(py) + ": every part"
+            " built on its own is the part cut out (" + std::to_string(cells)
+          + " jet cells in the parts, " + std::to_string(wholeCells)
+          + " in the whole)"
+        );
+    }
+}
+
 } // namespace
 
 
@@ -271,5 +337,7 @@ int main()
     tiling(t);
     subProblems<double>(t);
     subProblems<float>(t);
+    directParts<double>(t);
+    directParts<float>(t);
     return t.finish();
 }

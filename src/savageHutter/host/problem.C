@@ -60,6 +60,8 @@ Problem<Real>::Problem
             " that the grid's int indices reach"
         );
     }
+    wholeNx = nx;
+    wholeNy = ny;
     grid.nx = nx;
     grid.ny = ny;
     grid.dx = Real((xMax - xMin)/nx);
@@ -74,6 +76,75 @@ Problem<Real>::Problem
     h.assign(std::size_t(nx)*ny, Real(0));
     hu.assign(std::size_t(nx)*ny, Real(0));
     hv.assign(std::size_t(nx)*ny, Real(0));
+}
+
+
+template<class Real>
+Problem<Real>::Problem
+(
+    const Params<Real>& p,
+    const Subdomain& s,
+    double xMin,
+    double xMax,
+    double yMin,
+    double yMax
+)
+:
+    // The whole grid's spacing and origin, on a 1 x 1 grid (its arrays
+    // then sized for the part: the whole grid's are never held)
+    Problem(p, 1, 1, xMin, xMax, yMin, yMax)
+{
+    if
+    (
+        s.nxWhole < 1 || s.nyWhole < 1 || s.nx < 1 || s.ny < 1
+     || s.i0 < 0 || s.j0 < 0
+     || s.i0 + s.nx > s.nxWhole || s.j0 + s.ny > s.nyWhole
+    )
+    {
+        throw std::invalid_argument
+        (
+            "Problem: part of " + std::to_string(s.nx) + " x "
+          + std::to_string(s.ny) + " cells at (" + std::to_string(s.i0)
+          + ", " + std::to_string(s.j0) + ") of a whole grid of "
+          + std::to_string(s.nxWhole) + " x " + std::to_string(s.nyWhole)
+        );
+    }
+    // As the whole grid's constructor forms them
+    grid.dx = Real((xMax - xMin)/s.nxWhole);
+    grid.dy = Real((yMax - yMin)/s.nyWhole);
+    grid.rdx = Real(1)/grid.dx;
+    grid.rdy = Real(1)/grid.dy;
+    wholeNx = s.nxWhole;
+    wholeNy = s.nyWhole;
+    grid.nx = s.nx;
+    grid.ny = s.ny;
+    grid.i0 = s.i0;
+    grid.j0 = s.j0;
+    const long long padded =
+        (long long)(s.nx + 2*Grid<Real>::ng)*(s.ny + 2*Grid<Real>::ng);
+    if (padded > 2147483647LL)
+    {
+        throw std::invalid_argument
+        (
+            "Problem: a part of " + std::to_string(s.nx) + " x "
+          + std::to_string(s.ny) + " cells is more than the 2^31 - 1 cells"
+            " (with two ghost layers) that the grid's int indices reach"
+        );
+    }
+    for (int side = 0; side < 4; ++side)
+    {
+        if (s.processorSide(side))
+        {
+            bc.type[side] = BCType::processor;
+        }
+    }
+    zeta.assign(s.nx, Real(0));
+    kappa.assign(s.nx, Real(0));
+    const std::size_t n = std::size_t(s.nx)*s.ny;
+    zb.assign(n, Real(0));
+    h.assign(n, Real(0));
+    hu.assign(n, Real(0));
+    hv.assign(n, Real(0));
 }
 
 
@@ -110,16 +181,20 @@ void Problem<Real>::setInclination(const std::function<double(double)>& z)
 
 
 template<class Real>
-void Problem<Real>::setImpingingJet(const JetInput& in)
+InputError Problem<Real>::noJetCells(const JetInput& in)
 {
-    if (grid.i0 != 0 || grid.j0 != 0)
-    {
-        throw std::logic_error
-        (
-            "Problem::setImpingingJet on a subdomain: set the jet on the"
-            " whole problem, then cut the subdomain out (subProblem)"
-        );
-    }
+    return InputError
+    (
+        "R_imp",
+        "no cell centre lies within R_imp = " + numberString(in.rImp)
+      + " of the stagnation point: refine the mesh or enlarge R_imp"
+    );
+}
+
+
+template<class Real>
+int Problem<Real>::setImpingingJet(const JetInput& in)
+{
     const auto num = numberString;
     // Beyond 1e30 the jet's state (R^2, R_imp^2, h u_jet) overflows, as
     // every other input (modelInput.C)
@@ -162,8 +237,8 @@ void Problem<Real>::setImpingingJet(const JetInput& in)
     }
     const double x0 = grid.x0;
     const double y0 = grid.y0;
-    const double x1 = x0 + grid.nx*double(grid.dx);
-    const double y1 = y0 + grid.ny*double(grid.dy);
+    const double x1 = x0 + wholeNx*double(grid.dx);
+    const double y1 = y0 + wholeNy*double(grid.dy);
     if (!(in.xc >= x0 && in.xc <= x1 && in.yc >= y0 && in.yc <= y1))
     {
         throw InputError
@@ -188,10 +263,15 @@ void Problem<Real>::setImpingingJet(const JetInput& in)
     {
         return v < 0 ? 0 : (v > n - 1 ? n - 1 : int(v));
     };
-    j.iMin = clampI(std::floor((in.xc - in.rImp - x0)/grid.dx) - 1, grid.nx);
-    j.iMax = clampI(std::ceil((in.xc + in.rImp - x0)/grid.dx) + 1, grid.nx);
-    j.jMin = clampI(std::floor((in.yc - in.rImp - y0)/grid.dy) - 1, grid.ny);
-    j.jMax = clampI(std::ceil((in.yc + in.rImp - y0)/grid.dy) + 1, grid.ny);
+    // The whole grid's ranges, in this grid's indices
+    j.iMin = clampI(std::floor((in.xc - in.rImp - x0)/grid.dx) - 1, wholeNx)
+      - grid.i0;
+    j.iMax = clampI(std::ceil((in.xc + in.rImp - x0)/grid.dx) + 1, wholeNx)
+      - grid.i0;
+    j.jMin = clampI(std::floor((in.yc - in.rImp - y0)/grid.dy) - 1, wholeNy)
+      - grid.j0;
+    j.jMax = clampI(std::ceil((in.yc + in.rImp - y0)/grid.dy) + 1, wholeNy)
+      - grid.j0;
 
     // h of eq. (38) grows as 1/r: a cell centre next to the stagnation
     // point would get an arbitrarily thick, fast cell
@@ -213,16 +293,13 @@ void Problem<Real>::setImpingingJet(const JetInput& in)
 
     // The state the backends will impose, computed by the same function
     params.jet = j;
-    if (imposeJet() == 0)
+    const int cells = imposeJet();
+    if (cells == 0 && !isPart())
     {
         params.jet = JetParams<Real>();
-        throw InputError
-        (
-            "R_imp",
-            "no cell centre lies within R_imp = " + num(in.rImp)
-          + " of the stagnation point: refine the mesh or enlarge R_imp"
-        );
+        throw noJetCells(in);
     }
+    return cells;
 }
 
 
