@@ -37,7 +37,8 @@ sideCondition classify
     c.patch = hp.patch().name();
 
     const bool oneCellAcross =
-        (side < 2 && smesh.nx() == 1) || (side >= 2 && smesh.ny() == 1);
+        (side < 2 && smesh.nxWhole() == 1)
+     || (side >= 2 && smesh.nyWhole() == 1);
 
     if (ht == "zeroGradient" && Ut == "zeroGradient")
     {
@@ -137,6 +138,13 @@ FixedList<sideCondition, 4> readBoundaryConditions
     FixedList<sideCondition, 4> sides;
     for (label s = 0; s < 4; ++s)
     {
+        // A part's side inside the whole grid: the neighbour's cells
+        if (smesh.neighbour(s) >= 0)
+        {
+            sides[s].type = sh::BCType::processor;
+            sides[s].patch = "processor" + Foam::name(smesh.neighbour(s));
+            continue;
+        }
         const labelList& patches = smesh.sidePatches(s);
         if (patches.empty())
         {

@@ -34,7 +34,12 @@ Description
 
 Usage
     savageHutterFoam [-backend auto|cpu|cuda] [-precision double|single]
-                     [-logInterval seconds]
+                     [-logInterval seconds] [-parallel]
+
+    Decomposed (decomposePar with method simple, hierarchical or manual
+    into rectangles of the block): mpirun -np N savageHutterFoam -parallel,
+    one GPU per processor with -backend cuda; results bit for bit the
+    serial run's.
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
@@ -65,9 +70,18 @@ int main(int argc, char *argv[])
         "logInterval", "seconds",
         "wall time between progress lines (default 5)"
     );
-    argList::noParallel();
 
     #include "setRootCase.H"
+
+    #ifndef SH_HAVE_MPI
+    if (Pstream::parRun())
+    {
+        FatalErrorInFunction
+            << "This savageHutterFoam was built without MPI: no decomposed"
+            << " runs (install libopenmpi-dev, bin/installDependencies, and"
+            << " build again)" << nl << exit(FatalError);
+    }
+    #endif
 
     const word backend = args.getOrDefault<word>("backend", "auto");
     const word precision = args.getOrDefault<word>("precision", "double");
@@ -88,13 +102,14 @@ int main(int argc, char *argv[])
     // Before Time reads it: Time misuses some values (a floating-point
     // exception for writeInterval 0)
     const controlSettings control =
-        controlSettings::readFile(args.path()/"system"/"controlDict");
+        controlSettings::readFile(args.globalPath()/"system"/"controlDict");
 
     // A time directory a killed run was replacing, back before Time looks
     // for the latest time
     restoreReplaced(args.path());
 
     #include "createTime.H"
+    agreeStartTime(runTime);
 
     if (control.endTime < runTime.value())
     {

@@ -4,6 +4,7 @@
 
 #include "structuredMesh.H"
 #include "emptyPolyPatch.H"
+#include "processorPolyPatch.H"
 #include "IFstream.H"
 #include "boundBox.H"
 #include "volFields.H"
@@ -38,7 +39,9 @@ labelVector structuredMesh::readBlockCounts(const Time& runTime)
     };
     for (const fileName& rel : dictFiles)
     {
-        const fileName file(runTime.path()/rel);
+        // The case's own (a processor directory of a decomposed case has
+        // none: the undecomposed case's)
+        const fileName file(runTime.globalPath()/rel);
         if (!isFile(file))
         {
             continue;
@@ -165,12 +168,22 @@ structuredMesh::structuredMesh(const fvMesh& mesh)
     dy_(0),
     xMin_(0),
     yMin_(0),
+    xMax_(0),
+    yMax_(0),
+    nxWhole_(0),
+    nyWhole_(0),
+    i0_(0),
+    j0_(0),
+    neighbour_(-1),
     sidePatches_(4)
 {
+    const bool parallel = Pstream::parRun();
     const label nCells = mesh.nCells();
+    const label nCellsWhole = returnReduce(nCells, sumOp<label>());
     if (nCells == 0)
     {
         FatalErrorInFunction << "The mesh has no cells" << nl
+            << (parallel ? refusedSplit() : std::string()).c_str()
             << exit(FatalError);
     }
 
@@ -179,10 +192,11 @@ structuredMesh::structuredMesh(const fvMesh& mesh)
     // run again)
     const labelVector n = readBlockCounts(mesh.time());
     const scalar nBlock = scalar(n.x())*n.y()*n.z();
-    if (nBlock > 0 && nBlock != nCells)
+    if (nBlock > 0 && nBlock != nCellsWhole)
     {
         FatalErrorInFunction
-            << "The mesh in constant/polyMesh has " << nCells << " cells,"
+            << "The mesh in constant/polyMesh has " << nCellsWhole
+            << " cells" << (parallel ? " (all processors)" : "") << ","
             << " but blocks of system/blockMeshDict give " << n.x() << " x "
             << n.y() << " x " << n.z() << " = " << nBlock << ": the"
             << " mesh was not made from it (blockMesh failed, or was not run"
@@ -208,6 +222,19 @@ structuredMesh::structuredMesh(const fvMesh& mesh)
     const pointField& pts = mesh.points();
     const boundBox bb(pts, false);
     const vector span = bb.span();
+    // The whole grid's box: the same points as the serial run's, reduced
+    const vector wholeMin
+    (
+        returnReduce(bb.min().x(), minOp<scalar>()),
+        returnReduce(bb.min().y(), minOp<scalar>()),
+        0
+    );
+    const vector wholeMax
+    (
+        returnReduce(bb.max().x(), maxOp<scalar>()),
+        returnReduce(bb.max().y(), maxOp<scalar>()),
+        0
+    );
     const labelListList& cellPoints = mesh.cellPoints();
 
     // Widths of every cell: one uniform hexahedron per (i, j), full depth
@@ -241,6 +268,10 @@ structuredMesh::structuredMesh(const fvMesh& mesh)
         wyMax = max(wyMax, w.y());
     }
 
+    reduce(wxMin, minOp<scalar>());
+    reduce(wxMax, maxOp<scalar>());
+    reduce(wyMin, minOp<scalar>());
+    reduce(wyMax, maxOp<scalar>());
     if (!close(wxMin, wxMax, wxMax) || !close(wyMin, wyMax, wyMax))
     {
         FatalErrorInFunction
@@ -252,21 +283,39 @@ structuredMesh::structuredMesh(const fvMesh& mesh)
             << exit(FatalError);
     }
 
-    nx_ = label(span.x()/wxMax + 0.5);
-    ny_ = label(span.y()/wyMax + 0.5);
-    dx_ = span.x()/nx_;
-    dy_ = span.y()/ny_;
-    xMin_ = bb.min().x();
-    yMin_ = bb.min().y();
+    // The whole grid as the serial run forms it (span / count)
+    const scalar wholeSpanX = wholeMax.x() - wholeMin.x();
+    const scalar wholeSpanY = wholeMax.y() - wholeMin.y();
+    nxWhole_ = label(wholeSpanX/wxMax + 0.5);
+    nyWhole_ = label(wholeSpanY/wyMax + 0.5);
+    dx_ = wholeSpanX/nxWhole_;
+    dy_ = wholeSpanY/nyWhole_;
+    xMin_ = wholeMin.x();
+    yMin_ = wholeMin.y();
+    xMax_ = wholeMax.x();
+    yMax_ = wholeMax.y();
+    nx_ = label(span.x()/dx_ + 0.5);
+    ny_ = label(span.y()/dy_ + 0.5);
+    i0_ = label((bb.min().x() - xMin_)/dx_ + 0.5);
+    j0_ = label((bb.min().y() - yMin_)/dy_ + 0.5);
 
+    if (nxWhole_*nyWhole_ != nCellsWhole)
+    {
+        FatalErrorInFunction
+            << "The mesh is not one rectangular block: " << nCellsWhole
+            << " cells in a bounding box of " << nxWhole_ << " x "
+            << nyWhole_ << " cells of " << dx_ << " x " << dy_ << " m."
+            << "  Several blocks or a non-rectangular domain are not"
+            << " supported." << nl << exit(FatalError);
+    }
     if (nx_*ny_ != nCells)
     {
         FatalErrorInFunction
-            << "The mesh is not one rectangular block: " << nCells
+            << "Processor " << Pstream::myProcNo() << " holds " << nCells
             << " cells in a bounding box of " << nx_ << " x " << ny_
-            << " cells of " << dx_ << " x " << dy_ << " m.  Several blocks"
-            << " or a non-rectangular domain are not supported." << nl
-            << exit(FatalError);
+            << " cells at (" << i0_ << ", " << j0_ << ") of the " << nxWhole_
+            << " x " << nyWhole_ << " block: its part is not a rectangle."
+            << nl << refusedSplit().c_str() << exit(FatalError);
     }
 
     // Axis-aligned boxes, each grid cell exactly once
@@ -287,8 +336,10 @@ structuredMesh::structuredMesh(const fvMesh& mesh)
                 << " direction of the block." << nl
                 << exit(FatalError);
         }
-        const label i = min(label((C[c].x() - xMin_)/dx_), nx_ - 1);
-        const label j = min(label((C[c].y() - yMin_)/dy_), ny_ - 1);
+        const label i =
+            min(label((C[c].x() - bb.min().x())/dx_), nx_ - 1);
+        const label j =
+            min(label((C[c].y() - bb.min().y())/dy_), ny_ - 1);
         const label k = i + nx_*j;
         if (meshCell[k] >= 0)
         {
@@ -305,10 +356,13 @@ structuredMesh::structuredMesh(const fvMesh& mesh)
     // Boundary faces: front/back in empty patches, the rest on the sides
     const polyBoundaryMesh& patches = mesh.boundaryMesh();
     List<DynamicList<label>> onSide(4);
+    // Faces of each processor patch on each side
+    List<FixedList<label, 4>> procFaces(patches.size(), FixedList<label, 4>(0));
     forAll(patches, patchi)
     {
         const polyPatch& pp = patches[patchi];
         const bool isEmpty = isA<emptyPolyPatch>(pp);
+        const bool isProc = isA<processorPolyPatch>(pp);
         const vectorField nf(pp.faceNormals());
         bool sides[4] = {false, false, false, false};
         forAll(nf, facei)
@@ -330,7 +384,14 @@ structuredMesh::structuredMesh(const fvMesh& mesh)
             const label s = mag(n.x()) > mag(n.y())
                 ? (n.x() < 0 ? 0 : 1)
                 : (n.y() < 0 ? 2 : 3);
-            sides[s] = true;
+            if (isProc)
+            {
+                ++procFaces[patchi][s];
+            }
+            else
+            {
+                sides[s] = true;
+            }
         }
         for (label s = 0; s < 4; ++s)
         {
@@ -344,6 +405,93 @@ structuredMesh::structuredMesh(const fvMesh& mesh)
     {
         sidePatches_[s].transfer(onSide[s]);
     }
+
+    // Processor patches: each one whole side of this rectangle, toward a
+    // side of the part that lies inside the whole grid
+    forAll(patches, patchi)
+    {
+        if (!isA<processorPolyPatch>(patches[patchi]))
+        {
+            continue;
+        }
+        const processorPolyPatch& pp =
+            refCast<const processorPolyPatch>(patches[patchi]);
+        for (label s = 0; s < 4; ++s)
+        {
+            const label faces = procFaces[patchi][s];
+            if (faces == 0)
+            {
+                continue;
+            }
+            const label along = s < 2 ? ny_ : nx_;
+            if (faces != pp.size() || faces != along || neighbour_[s] >= 0)
+            {
+                FatalErrorInFunction
+                    << "Processor " << Pstream::myProcNo() << " ("
+                    << nx_ << " x " << ny_ << " cells at (" << i0_ << ", "
+                    << j0_ << ")): its patch " << pp.name() << " toward"
+                    << " processor " << pp.neighbProcNo() << " holds "
+                    << faces << " of its " << pp.size() << " faces on side "
+                    << sideNames[s] << ", which is " << along << " cells"
+                    << " long: neighbours do not share whole sides." << nl
+                    << refusedSplit().c_str() << exit(FatalError);
+            }
+            neighbour_[s] = pp.neighbProcNo();
+        }
+    }
+    const FixedList<bool, 4> onEdge
+    ({
+        i0_ == 0, i0_ + nx_ == nxWhole_, j0_ == 0, j0_ + ny_ == nyWhole_
+    });
+    for (label s = 0; s < 4; ++s)
+    {
+        if ((neighbour_[s] < 0) != onEdge[s])
+        {
+            FatalErrorInFunction
+                << "Processor " << Pstream::myProcNo() << " (" << nx_
+                << " x " << ny_ << " cells at (" << i0_ << ", " << j0_
+                << ")): its side " << sideNames[s] << " lies "
+                << (onEdge[s] ? "on" : "inside") << " the whole block but"
+                << " is " << (neighbour_[s] < 0 ? "not " : "")
+                << "a processor patch." << nl << refusedSplit().c_str()
+                << exit(FatalError);
+        }
+    }
+}
+
+
+std::string structuredMesh::refusedSplit() const
+{
+    return
+        "savageHutterFoam runs decomposed only when each processor holds a"
+        " rectangle of the block and neighbours share whole sides: in"
+        " system/decomposeParDict, method simple or hierarchical with n"
+        " (nx ny 1) that divide the block's cell counts"
+      + std::string
+        (
+            nxWhole_ > 0
+          ? " (here " + std::to_string(nxWhole_) + " x "
+          + std::to_string(nyWhole_) + ")"
+          : std::string()
+        )
+      + ", or method manual with such a split; then decomposePar -force\n";
+}
+
+
+sh::Subdomain structuredMesh::subdomain() const
+{
+    sh::Subdomain s;
+    s.nxWhole = int(nxWhole_);
+    s.nyWhole = int(nyWhole_);
+    s.i0 = int(i0_);
+    s.j0 = int(j0_);
+    s.nx = int(nx_);
+    s.ny = int(ny_);
+    for (label side = 0; side < 4; ++side)
+    {
+        s.neighbour[side] = int(neighbour_[side]);
+    }
+    return s;
 }
 
 } // End namespace Foam

@@ -182,6 +182,56 @@ void checkWritable(const Time& runTime)
 }
 
 
+void agreeStartTime(Time& runTime)
+{
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+    const scalar mine = runTime.value();
+    const scalar common = returnReduce(mine, minOp<scalar>());
+    const scalar latest = returnReduce(mine, maxOp<scalar>());
+    if (common == latest)
+    {
+        return;
+    }
+    Info<< "The processors' start times range over [" << common << ", "
+        << latest << "] (a run stopped while writing): all start from "
+        << common << nl << endl;
+    if (mine == common)
+    {
+        return;
+    }
+    const instantList times = runTime.times();
+    forAll(times, i)
+    {
+        if (times[i].value() == common)
+        {
+            runTime.setTime(times[i], 0);
+            // The step count of the run that wrote it, as Time reads it
+            IOdictionary timeDict
+            (
+                IOobject
+                (
+                    "time", runTime.timeName(), "uniform", runTime,
+                    IOobject::READ_IF_PRESENT, IOobject::NO_WRITE, false
+                )
+            );
+            label index = 0;
+            timeDict.readIfPresent("index", index);
+            runTime.setTime(times[i], index);
+            return;
+        }
+    }
+    FatalErrorInFunction
+        << "Processor " << Pstream::myProcNo() << " has no time directory "
+        << common << ", the start time of another processor (its own: "
+        << runTime.timeName() << ").  The processor directories do not"
+        << " hold a common time: decomposePar again, or remove the later"
+        << " times" << nl << exit(FatalError);
+}
+
+
 namespace
 {
 
