@@ -108,8 +108,12 @@ int main(int argc, char *argv[])
     // for the latest time
     restoreReplaced(args.path());
 
+    if (control.startFrom == "latestTime")
+    {
+        removeUnsharedTimes(args.path());
+    }
+
     #include "createTime.H"
-    agreeStartTime(runTime);
 
     if (control.endTime < runTime.value())
     {

@@ -182,53 +182,39 @@ void checkWritable(const Time& runTime)
 }
 
 
-void agreeStartTime(Time& runTime)
+void removeUnsharedTimes(const fileName& processorDir)
 {
     if (!Pstream::parRun())
     {
         return;
     }
-    const scalar mine = runTime.value();
+    const instantList times = Time::findTimes(processorDir, "constant");
+    const scalar mine = times.size() ? times.last().value() : -VGREAT;
     const scalar common = returnReduce(mine, minOp<scalar>());
     const scalar latest = returnReduce(mine, maxOp<scalar>());
     if (common == latest)
     {
         return;
     }
-    Info<< "The processors' start times range over [" << common << ", "
-        << latest << "] (a run stopped while writing): all start from "
-        << common << nl << endl;
-    if (mine == common)
-    {
-        return;
-    }
-    const instantList times = runTime.times();
     forAll(times, i)
     {
-        if (times[i].value() == common)
+        if (times[i].value() > common)
         {
-            runTime.setTime(times[i], 0);
-            // The step count of the run that wrote it, as Time reads it
-            IOdictionary timeDict
-            (
-                IOobject
-                (
-                    "time", runTime.timeName(), "uniform", runTime,
-                    IOobject::READ_IF_PRESENT, IOobject::NO_WRITE, false
-                )
-            );
-            label index = 0;
-            timeDict.readIfPresent("index", index);
-            runTime.setTime(times[i], index);
-            return;
+            const fileName dir = processorDir/times[i].name();
+            Pout<< "Time " << times[i].name() << " of " << dir << " is"
+                << " missing on other processors (a decomposed run stopped"
+                << " while writing): removed" << endl;
+            if (!rmDir(dir))
+            {
+                FatalErrorInFunction
+                    << "Cannot remove " << dir << ", a time the other"
+                    << " processors lack; remove it by hand" << nl
+                    << exit(FatalError);
+            }
         }
     }
-    FatalErrorInFunction
-        << "Processor " << Pstream::myProcNo() << " has no time directory "
-        << common << ", the start time of another processor (its own: "
-        << runTime.timeName() << ").  The processor directories do not"
-        << " hold a common time: decomposePar again, or remove the later"
-        << " times" << nl << exit(FatalError);
+    Info<< "The processors' latest times range over [" << common << ", "
+        << latest << "]: all start from " << common << nl << endl;
 }
 
 

@@ -1,0 +1,233 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# savageHutterFoam: Savage-Hutter granular avalanche solver
+#
+# Description
+#     Decomposed runs the OpenFOAM way (issue 12), on CPU ranks, against
+#     the serial run of the same case: a copy of the damBreak tutorial on
+#     48 x 12 cells with an inflow side (xMin), a transmissive side (xMax),
+#     walls (y), a dam break and a cap off the centre line (so that cuts in
+#     x and y both carry flow), rho for pMax, the arrival map, written with
+#     writePrecision 17 (decomposePar and reconstructPar write fields with
+#     it).  Checks (tests/application/compareDecomposed.py compares):
+#       - decompositions (2 1 1), (1 2 1) simple, (2 2 1) hierarchical and
+#         an uneven (3 1 1) by method manual (20/14/14 columns): decomposePar,
+#         mpirun -np N savageHutterFoam -parallel, reconstructPar; every
+#         field of every written time (h, U, hU, zb, regime, hMax, UMax,
+#         pMax, tArrival) on every processor identical to the serial run's
+#         cells, bit for bit, and as reconstructed (reconstructPar writes a
+#         -0 as 0: the sign of zero aside); the steady-state report written
+#         with as many lines;
+#       - a decomposition that is not rectangles (simple (5 1 1): a
+#         staircase) refused naming the methods that work, non-zero exit,
+#         nothing written;
+#       - a parallel restart (startFrom latestTime, (2 2 1)) continues to
+#         the serial run's files; so does one whose last time is missing on
+#         one processor (the processors agree on the earlier time);
+#       - foamToVTK -parallel reads the decomposed output.
+#     mpirun runs as root with OMPI_ALLOW_RUN_AS_ROOT and oversubscribes
+#     the cores (--oversubscribe: Open MPI).  Without MPI (mpirun absent,
+#     or savageHutterFoam built without it) every check is skipped, saying
+#     why.
+#
+# Usage
+#     parallelTests.sh <project dir> <work dir>
+#------------------------------------------------------------------------------
+project="$1"
+work="$2"
+. "$project/tests/application/testFunctions.sh"
+
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+export OMP_NUM_THREADS=1
+
+if ! command -v mpirun > /dev/null
+then
+    skip "decomposed runs: no mpirun (bin/installDependencies installs openmpi-bin)"
+    finish
+    exit 77
+fi
+
+fields="h U hU zb regime hMax UMax pMax tArrival"
+
+base="$work/base"
+mkdir "$base"
+cp -r "$project"/tutorials/damBreak/{0.orig,constant,system} "$base"/
+(
+    cd "$base" || exit 1
+    setBlockCells 48 12
+    setEntry system/controlDict endTime 0.4
+    setEntry system/controlDict writeInterval 0.2
+    setEntry system/controlDict writePrecision 17
+    setEntry system/controlDict startFrom latestTime
+    setEntry constant/transportProperties rho 1500
+    setEntry 0.orig/h boundaryField/upslope "{ type fixedValue; value uniform 0.3; }"
+    setEntry 0.orig/U boundaryField/upslope "{ type fixedValue; value uniform (2 0 0); }"
+    cat > system/setAvalancheFieldsDict <<'EOF'
+FoamFile { version 2.0; format ascii; class dictionary; object setAvalancheFieldsDict; }
+h
+(
+    damBreak   { position -6; upstream 1; downstream 0; }
+    hemisphere { centre (1 0.7); radius 1.3; }
+);
+U
+(
+    box { min (-3 -1.6); max (3 0); value (1 0.5 0); }
+);
+EOF
+    runApplication blockMesh
+    restore0Dir
+    runApplication setAvalancheFields
+) > "$work/base.log" 2>&1 || { cat "$work/base.log"; fail "setting up the base case (its log above)"; finish; exit 1; }
+
+# The serial run
+serial="$work/serial"
+cp -r "$base" "$serial"
+(cd "$serial" && savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1) \
+    || { fail "the serial run (see $serial/log.savageHutterFoam)"; finish; exit 1; }
+serialTimes="$(timeDirs "$serial" | tr '\n' ' ')"
+[ "$serialTimes" = "0.2 0.4 " ] || fail "the serial run wrote '$serialTimes', not 0.2 0.4"
+
+#- decomposeDict <case> <n> <method> [<nx> <ny>]: system/decomposeParDict
+decomposeDict()
+{
+    local dir="$1" n="$2" method="$3"
+    {
+        echo 'FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }'
+        echo "numberOfSubdomains $n;"
+        echo "method $method;"
+        echo "simpleCoeffs { n ($4 $5 1); delta 0.001; }"
+        echo "hierarchicalCoeffs { n ($4 $5 1); delta 0.001; order xyz; }"
+        echo 'manualCoeffs { dataFile "cellDecomposition"; }'
+    } > "$dir/system/decomposeParDict"
+}
+
+#- sameAsSerial <case> <what>: every field of every serial time, on every
+#  processor (bit for bit) and as reconstructed (but for signs of zero)
+sameAsSerial()
+{
+    local out rc
+    out="$(python3 "$project/tests/application/compareDecomposed.py" "$2" \
+        "$serial" "$1" "$serialTimes" "$fields" 2>&1)"
+    rc=$?
+    tally "$rc" "$out" "$2"
+}
+
+#- runParallel <case> <n> [args]: decomposePar, mpirun, reconstructPar
+runParallel()
+{
+    local dir="$1" n="$2"
+    shift 2
+    (
+        cd "$dir" || exit 1
+        decomposePar -force > log.decomposePar 2>&1 || exit 2
+        mpirun --oversubscribe -np "$n" savageHutterFoam -parallel \
+            -backend cpu "$@" > log.savageHutterFoam 2>&1 || exit 3
+        reconstructPar > log.reconstructPar 2>&1 || exit 4
+    )
+}
+
+newCase()
+{
+    rm -rf "$work/$1"
+    cp -r "$base" "$work/$1"
+    echo "$work/$1"
+}
+
+for split in "2 simple 2 1" "2 simple 1 2" "4 hierarchical 2 2" "3 manual 3 1"
+do
+    set -- $split
+    name="split$3x$4-$2"
+    dir="$(newCase "$name")"
+    decomposeDict "$dir" "$1" "$2" "$3" "$4"
+    if [ "$2" = manual ]
+    then
+        # Columns 0-19, 20-33, 34-47: parts of 20, 14 and 14 columns
+        {
+            echo 'FoamFile { version 2.0; format ascii; class labelList; object cellDecomposition; }'
+            echo 576
+            echo '('
+            for j in $(seq 0 11); do for i in $(seq 0 47); do
+                if [ "$i" -lt 20 ]; then echo 0; elif [ "$i" -lt 34 ]; then echo 1; else echo 2; fi
+            done; done
+            echo ')'
+        } > "$dir/constant/cellDecomposition"
+    fi
+    runParallel "$dir" "$1"
+    rc=$?
+    if grep -q "built without MPI" "$dir/log.savageHutterFoam" 2>/dev/null
+    then
+        skip "decomposed runs: savageHutterFoam was built without MPI"
+        finish
+        exit 77
+    fi
+    if [ $rc -ne 0 ]
+    then
+        fail "$name: step $rc of decomposePar, mpirun, reconstructPar failed (see $dir/log.*)"
+        continue
+    fi
+    sameAsSerial "$dir" "$name, mpirun -np $1"
+    if [ "$(wc -l < "$dir/postProcessing/steadyState/0/dhdt.dat")" \
+        = "$(wc -l < "$serial/postProcessing/steadyState/0/dhdt.dat")" ]
+    then
+        pass "$name: the steady-state report written (by the master)"
+    else
+        fail "$name: postProcessing/steadyState/0/dhdt.dat missing or short"
+    fi
+done
+
+# A staircase: refused, naming the methods; nothing written
+dir="$(newCase staircase)"
+decomposeDict "$dir" 5 simple 5 1
+(cd "$dir" && decomposePar -force > log.decomposePar 2>&1)
+(cd "$dir" && mpirun --oversubscribe -np 5 savageHutterFoam -parallel -backend cpu > log.savageHutterFoam 2>&1)
+rc=$?
+written="$(cd "$dir" && ls -d processor*/[1-9]* processor*/0.[0-9]* 2>/dev/null)"
+if [ $rc -ne 0 ] && grep -q "not a rectangle" "$dir/log.savageHutterFoam" \
+    && grep -q "method simple or hierarchical" "$dir/log.savageHutterFoam" \
+    && [ -z "$written" ]
+then
+    pass "simple (5 1 1), a staircase: refused ($(grep -m1 'not a rectangle' "$dir/log.savageHutterFoam" | cut -c1-100)...)"
+else
+    fail "simple (5 1 1), a staircase: exit $rc, written '$written' (see $dir/log.savageHutterFoam)"
+fi
+
+# A parallel restart: to 0.2, then on to 0.4 from latestTime
+dir="$(newCase restart)"
+decomposeDict "$dir" 4 hierarchical 2 2
+setEntry "$dir/system/controlDict" endTime 0.2
+(cd "$dir" && decomposePar -force > log.decomposePar 2>&1 \
+    && mpirun --oversubscribe -np 4 savageHutterFoam -parallel -backend cpu > log.first 2>&1)
+rc1=$?
+setEntry "$dir/system/controlDict" endTime 0.4
+(cd "$dir" && mpirun --oversubscribe -np 4 savageHutterFoam -parallel -backend cpu > log.restart 2>&1 \
+    && reconstructPar > log.reconstructPar 2>&1)
+rc2=$?
+if [ $rc1 -eq 0 ] && [ $rc2 -eq 0 ] && grep -q "Create mesh for time = 0.2" "$dir/log.restart"
+then
+    sameAsSerial "$dir" "restart from 0.2 on 2 x 2"
+else
+    fail "restart on 2 x 2: exit $rc1, $rc2, or not from 0.2 (see $dir/log.*)"
+fi
+
+# The last time missing on one processor: all start from the one before
+rm -rf "$dir"/processor1/0.4 "$dir"/0.2 "$dir"/0.4
+(cd "$dir" && mpirun --oversubscribe -np 4 savageHutterFoam -parallel -backend cpu > log.agree 2>&1 \
+    && reconstructPar > log.reconstructPar2 2>&1)
+rc=$?
+if [ $rc -eq 0 ] && grep -q "all start from 0.2" "$dir/log.agree"
+then
+    sameAsSerial "$dir" "restart with 0.4 missing on processor 1 (all from 0.2)"
+else
+    fail "restart with 0.4 missing on processor 1: exit $rc (see $dir/log.agree)"
+fi
+
+# foamToVTK on the decomposed case
+if (cd "$dir" && mpirun --oversubscribe -np 4 foamToVTK -parallel -latestTime > log.foamToVTK 2>&1) \
+    && ls "$dir"/VTK/* > /dev/null 2>&1
+then
+    pass "foamToVTK -parallel -latestTime wrote $(ls "$dir"/VTK | head -3 | tr '\n' ' ')"
+else
+    fail "foamToVTK -parallel (see $dir/log.foamToVTK)"
+fi
+
+finish
