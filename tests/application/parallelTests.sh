@@ -9,7 +9,7 @@
 #     walls (y), a dam break and a cap off the centre line (so that cuts in
 #     x and y both carry flow), rho for pMax, the arrival map, written with
 #     writePrecision 17 (decomposePar and reconstructPar write fields with
-#     it).  Checks (tests/application/compareDecomposed.py compares):
+#     it).  Checks (bin/tools/compareDecomposed compares):
 #       - decompositions (2 1 1), (1 2 1) simple, (2 2 1) hierarchical and
 #         an uneven (3 1 1) by method manual (20/14/14 columns): decomposePar,
 #         mpirun -np N savageHutterFoam -parallel, reconstructPar; every
@@ -106,7 +106,7 @@ decomposeDict()
 sameAsSerial()
 {
     local out rc
-    out="$(python3 "$project/tests/application/compareDecomposed.py" "$2" \
+    out="$(python3 "$project/bin/tools/compareDecomposed" "$2" \
         "$serial" "$1" "$serialTimes" "$fields" 2>&1)"
     rc=$?
     tally "$rc" "$out" "$2"

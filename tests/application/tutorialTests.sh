@@ -7,8 +7,11 @@
 #     the style of OpenFOAM's Alltest, in copies under the work directory:
 #     a tutorial fails when its Allrun fails, a log holds "FOAM FATAL", a
 #     savageHutterFoam log lacks its final "End", or its plot script's own
-#     checks (--check: the paper's tables, volume, h >= 0) fail.
-#     Prints one line per tutorial and "N passed, M failed".
+#     checks (--check: the paper's tables, volume, h >= 0) fail.  A
+#     tutorial with an Allrun-parallel is also run decomposed, shortened
+#     (2 processes), and fails unless its fields are the serial run's
+#     (log.compareDecomposed); without mpirun that run is skipped.
+#     Prints one line per run and "N passed, M failed, K skipped".
 #
 # Usage
 #     tutorialTests.sh <project dir> <work dir> [tutorial ...]
@@ -30,6 +33,7 @@ fi
 
 passed=0
 failed=0
+skipped=0
 rm -rf "$work"
 mkdir -p "$work"
 for t in "${tutorials[@]}"
@@ -66,7 +70,43 @@ do
         failed=$((failed + 1))
     fi
     echo
+
+    # Its decomposed run, shortened (2 processes, checked against the
+    # serial run cell by cell)
+    [ -x "$project/tutorials/$t/Allrun-parallel" ] || continue
+    if ! command -v mpirun > /dev/null
+    then
+        echo "SKIP  $t/Allrun-parallel: no mpirun (bin/installDependencies installs openmpi-bin)"
+        skipped=$((skipped + 1))
+        continue
+    fi
+    dir="$work/$t-parallel"
+    cp -r "$project/tutorials/$t" "$dir"
+    (cd "$dir" && ./Allclean > /dev/null 2>&1)
+    problems=""
+    if ! (cd "$dir" && SH_SHORT=1 ./Allrun-parallel > "$work/$t-parallel.Allrun.log" 2>&1)
+    then
+        problems="$problems Allrun-parallel failed;"
+    fi
+    fatal="$(grep -rl "FOAM FATAL" --include='log.*' "$dir")"
+    [ -z "$fatal" ] || problems="$problems FOAM FATAL in $fatal;"
+    compare="$dir/log.compareDecomposed"
+    if [ ! -f "$compare" ] || grep -q "^FAIL" "$compare" || ! grep -q "^PASS" "$compare"
+    then
+        problems="$problems the decomposed run is not the serial one ($compare);"
+    fi
+    [ -f "$compare" ] && cat "$compare"
+    if [ -z "$problems" ]
+    then
+        echo "PASS  $t/Allrun-parallel (2 processes, the serial run's fields)"
+        passed=$((passed + 1))
+    else
+        echo "FAIL  $t/Allrun-parallel:$problems (see $work/$t-parallel.Allrun.log)"
+        tail -n 20 "$work/$t-parallel.Allrun.log"
+        failed=$((failed + 1))
+    fi
+    echo
 done
 
-echo "$passed passed, $failed failed"
+echo "$passed passed, $failed failed, $skipped skipped"
 [ "$failed" -eq 0 ] && [ "$passed" -gt 0 ]
