@@ -24,6 +24,9 @@
 #       - a parallel restart (startFrom latestTime, (2 2 1)) continues to
 #         the serial run's files; so does one whose last time is missing on
 #         one processor (the processors agree on the earlier time);
+#       - SIGTERM to mpirun: both processors write the same time whole and
+#         stop; a parallel restart from it reaches, at the next write time
+#         but one, the state of the serial run uninterrupted to it;
 #       - foamToVTK -parallel reads the decomposed output.
 #     mpirun runs as root with OMPI_ALLOW_RUN_AS_ROOT and oversubscribes
 #     the cores (--oversubscribe: Open MPI).  Without MPI (mpirun absent,
@@ -221,7 +224,50 @@ else
     fail "restart with 0.4 missing on processor 1: exit $rc (see $dir/log.agree)"
 fi
 
+# SIGTERM to mpirun: every processor writes the same time and stops; a
+# parallel restart from there reaches the serial run's state
+dir="$(newCase sigterm)"
+decomposeDict "$dir" 2 simple 2 1
+setEntry "$dir/system/controlDict" endTime 1000
+(cd "$dir" && decomposePar -force > log.decomposePar 2>&1)
+(cd "$dir" && exec mpirun --oversubscribe -np 2 savageHutterFoam -parallel -backend cpu -logInterval 0.1 > log.savageHutterFoam 2>&1) &
+pid=$!
+waitFor "$dir/log.savageHutterFoam" "^Time = " 60
+sleep 0.5
+kill -TERM $pid
+wait $pid
+rc=$?
+t0="$(timeDirs "$dir/processor0" | tail -n 1)"
+t1="$(timeDirs "$dir/processor1" | tail -n 1)"
+if grep -q "Stopped by SIGTERM" "$dir/log.savageHutterFoam" && [ -n "$t0" ] \
+    && [ "$t0" = "$t1" ] && complete "$dir/processor0" "$t0" && complete "$dir/processor1" "$t0"
+then
+    pass "SIGTERM to mpirun (exit $rc): both processors wrote $t0 whole and stopped"
+    # On to the next write time but one, from latestTime, against the
+    # serial run uninterrupted to it
+    end="$(python3 -c "import math; print(round((math.floor($t0/0.2 + 1e-9) + 2)*0.2, 9))")"
+    setEntry "$dir/system/controlDict" endTime "$end"
+    (cd "$dir" && mpirun --oversubscribe -np 2 savageHutterFoam -parallel -backend cpu > log.restart 2>&1 \
+        && reconstructPar -latestTime > log.reconstructPar 2>&1)
+    rc=$?
+    ser2="$work/serialTo$end"
+    cp -r "$base" "$ser2"
+    setEntry "$ser2/system/controlDict" endTime "$end"
+    (cd "$ser2" && savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1)
+    if [ $rc -eq 0 ] && [ -d "$ser2/$end" ] && grep -q "Create mesh for time = $t0" "$dir/log.restart"
+    then
+        out="$(python3 "$project/bin/tools/compareDecomposed" \
+            "restart from $t0 (SIGTERM) to $end" "$ser2" "$dir" "$end" "$fields" 2>&1)"
+        tally $? "$out" "restart from $t0"
+    else
+        fail "restart from $t0 to $end after SIGTERM: exit $rc (see $dir/log.restart, $ser2)"
+    fi
+else
+    fail "SIGTERM to mpirun: exit $rc, latest times '$t0' and '$t1' (see $dir/log.savageHutterFoam)"
+fi
+
 # foamToVTK on the decomposed case
+dir="$work/restart"
 if (cd "$dir" && mpirun --oversubscribe -np 4 foamToVTK -parallel -latestTime > log.foamToVTK 2>&1) \
     && ls "$dir"/VTK/* > /dev/null 2>&1
 then
