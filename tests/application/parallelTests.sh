@@ -245,7 +245,7 @@ then
     pass "SIGTERM to mpirun (exit $rc): both processors wrote $t0 whole and stopped"
     # On to the next write time but one, from latestTime, against the
     # serial run uninterrupted to it
-    end="$(python3 -c "import math; print(round((math.floor($t0/0.2 + 1e-9) + 2)*0.2, 9))")"
+    end="$(python3 -c "import math; print('%.9g' % ((math.floor($t0/0.2 + 1e-9) + 2)*0.2))")"
     setEntry "$dir/system/controlDict" endTime "$end"
     (cd "$dir" && mpirun --oversubscribe -np 2 savageHutterFoam -parallel -backend cpu > log.restart 2>&1 \
         && reconstructPar -latestTime > log.reconstructPar 2>&1)
