@@ -327,13 +327,8 @@ Diagnostics CpuSolver<Real>::diagnostics()
     // The wave rate of a cell looks at its neighbours' h
     fillStateGhosts();
     Diagnostics d = diagnosticsOf(model_, U_.view());
-    d.volume = halo_->sumAll(d.volume);
-    d.wetCells = long(halo_->sumAll((long long)d.wetCells));
-    d.movingCells = long(halo_->sumAll((long long)d.movingCells));
-    d.maxRate = double(halo_->maxAll(Real(d.maxRate)));
-    d.hMax = double(halo_->maxAll(Real(d.hMax)));
-    d.speedClips = halo_->sumAll(speedClips_);
-    return d;
+    d.speedClips = speedClips_;
+    return reducedDiagnostics(*halo_, d);
 }
 
 
