@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <limits>
-#include <stdexcept>
 #include <string>
 
 #ifdef _OPENMP
@@ -16,50 +15,10 @@ namespace sh
 namespace
 {
 
-//- The problem's grid is the halo's subdomain, its processor sides those
-//  with a neighbour
 template<class Real>
 const Problem<Real>& checkedSubdomain(const Problem<Real>& pb, Halo<Real>* halo)
 {
-    if (!halo)
-    {
-        for (int side = 0; side < 4; ++side)
-        {
-            if (pb.bc.type[side] == BCType::processor)
-            {
-                throw std::invalid_argument
-                (
-                    "CpuSolver: the problem has a processor side (a"
-                    " subdomain) but no halo to exchange with its"
-                    " neighbours"
-                );
-            }
-        }
-        return pb;
-    }
-    const Subdomain& s = halo->subdomain();
-    bool ok =
-        s.nx == pb.grid.nx && s.ny == pb.grid.ny
-     && s.i0 == pb.grid.i0 && s.j0 == pb.grid.j0
-     && s.nx >= Grid<Real>::ng && s.ny >= Grid<Real>::ng;
-    for (int side = 0; side < 4; ++side)
-    {
-        ok = ok
-         && s.processorSide(side) == (pb.bc.type[side] == BCType::processor);
-    }
-    // Collective, so that a mismatch on one rank stops all of them rather
-    // than leaving the others waiting in the first exchange
-    if (halo->anyAll(!ok))
-    {
-        throw std::invalid_argument
-        (
-            "CpuSolver: the problem's grid (" + std::to_string(pb.grid.nx)
-          + " x " + std::to_string(pb.grid.ny) + " cells at ("
-          + std::to_string(pb.grid.i0) + ", " + std::to_string(pb.grid.j0)
-          + ")) or its processor sides are not the halo's subdomain"
-          + (ok ? std::string(" on another rank") : std::string())
-        );
-    }
+    checkSubdomain(pb, halo, "CpuSolver");
     return pb;
 }
 
@@ -368,13 +327,8 @@ Diagnostics CpuSolver<Real>::diagnostics()
     // The wave rate of a cell looks at its neighbours' h
     fillStateGhosts();
     Diagnostics d = diagnosticsOf(model_, U_.view());
-    d.volume = halo_->sumAll(d.volume);
-    d.wetCells = long(halo_->sumAll((long long)d.wetCells));
-    d.movingCells = long(halo_->sumAll((long long)d.movingCells));
-    d.maxRate = double(halo_->maxAll(Real(d.maxRate)));
-    d.hMax = double(halo_->maxAll(Real(d.hMax)));
-    d.speedClips = halo_->sumAll(speedClips_);
-    return d;
+    d.speedClips = speedClips_;
+    return reducedDiagnostics(*halo_, d);
 }
 
 

@@ -66,6 +66,24 @@ bool cudaMemoryInfo(std::size_t* freeBytes, std::size_t* totalBytes)
 }
 
 
+int cudaDeviceCount()
+{
+    int n = 0;
+    if (cudaGetDeviceCount(&n) != cudaSuccess)
+    {
+        cudaGetLastError();
+        return 0;
+    }
+    return n;
+}
+
+
+void cudaSelectDevice(int device)
+{
+    SH_CUDA_CHECK(cudaSetDevice(device));
+}
+
+
 bool cudaAvailable(std::string* why)
 {
     int n = 0;
@@ -99,6 +117,9 @@ bool cudaAvailable(std::string* why)
     return true;
 }
 
-template std::unique_ptr<Solver<double>> makeCudaSolver(const Problem<double>&);
+template std::unique_ptr<Solver<double>> makeCudaSolver
+(
+    const Problem<double>&, Halo<double>*
+);
 
 } // namespace sh

@@ -32,6 +32,9 @@ bool cudaFloatApproximate()
 #endif
 }
 
-template std::unique_ptr<Solver<float>> makeCudaSolver(const Problem<float>&);
+template std::unique_ptr<Solver<float>> makeCudaSolver
+(
+    const Problem<float>&, Halo<float>*
+);
 
 } // namespace sh

@@ -52,13 +52,31 @@ bool cudaFloatApproximate()
 }
 
 
-template<class Real>
-std::unique_ptr<Solver<Real>> makeCudaSolver(const Problem<Real>&)
+int cudaDeviceCount()
+{
+    return 0;
+}
+
+
+void cudaSelectDevice(int)
 {
     throw std::runtime_error(std::string("CUDA backend: ") + notBuilt);
 }
 
-template std::unique_ptr<Solver<double>> makeCudaSolver(const Problem<double>&);
-template std::unique_ptr<Solver<float>> makeCudaSolver(const Problem<float>&);
+
+template<class Real>
+std::unique_ptr<Solver<Real>> makeCudaSolver(const Problem<Real>&, Halo<Real>*)
+{
+    throw std::runtime_error(std::string("CUDA backend: ") + notBuilt);
+}
+
+template std::unique_ptr<Solver<double>> makeCudaSolver
+(
+    const Problem<double>&, Halo<double>*
+);
+template std::unique_ptr<Solver<float>> makeCudaSolver
+(
+    const Problem<float>&, Halo<float>*
+);
 
 } // namespace sh

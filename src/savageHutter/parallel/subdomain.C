@@ -147,4 +147,60 @@ Problem<Real> subProblem(const Problem<Real>& whole, const Subdomain& s)
 template Problem<double> subProblem(const Problem<double>&, const Subdomain&);
 template Problem<float> subProblem(const Problem<float>&, const Subdomain&);
 
+template<class Real>
+void checkSubdomain
+(
+    const Problem<Real>& pb,
+    Halo<Real>* halo,
+    const std::string& backend
+)
+{
+    if (!halo)
+    {
+        for (int side = 0; side < 4; ++side)
+        {
+            if (pb.bc.type[side] == BCType::processor)
+            {
+                throw std::invalid_argument
+                (
+                    backend + ": the problem has a processor side (a"
+                    " subdomain) but no halo to exchange with its"
+                    " neighbours"
+                );
+            }
+        }
+        return;
+    }
+    const Subdomain& s = halo->subdomain();
+    bool ok =
+        s.nx == pb.grid.nx && s.ny == pb.grid.ny
+     && s.i0 == pb.grid.i0 && s.j0 == pb.grid.j0
+     && s.nx >= Grid<Real>::ng && s.ny >= Grid<Real>::ng;
+    for (int side = 0; side < 4; ++side)
+    {
+        ok = ok
+         && s.processorSide(side) == (pb.bc.type[side] == BCType::processor);
+    }
+    if (halo->anyAll(!ok))
+    {
+        throw std::invalid_argument
+        (
+            backend + ": the problem's grid (" + std::to_string(pb.grid.nx)
+          + " x " + std::to_string(pb.grid.ny) + " cells at ("
+          + std::to_string(pb.grid.i0) + ", " + std::to_string(pb.grid.j0)
+          + ")) or its processor sides are not the halo's subdomain"
+          + (ok ? std::string(" on another rank") : std::string())
+        );
+    }
+}
+
+template void checkSubdomain
+(
+    const Problem<double>&, Halo<double>*, const std::string&
+);
+template void checkSubdomain
+(
+    const Problem<float>&, Halo<float>*, const std::string&
+);
+
 } // namespace sh
