@@ -28,6 +28,10 @@
 #         stop; a parallel restart from it reaches, at the next write time
 #         but one, the state of the serial run uninterrupted to it;
 #       - foamToVTK -parallel reads the decomposed output.
+#     SH_PARALLEL_BACKEND=cuda runs the decomposed runs on the GPU (a GPU
+#     per processor by its rank on the node, the GPUs shared when fewer),
+#     still against the serial CPU run (tests/application/
+#     gpuParallelCheck.sh on the GPU machine).
 #     mpirun runs as root with OMPI_ALLOW_RUN_AS_ROOT and oversubscribes
 #     the cores (--oversubscribe: Open MPI).  Without MPI (mpirun absent,
 #     or savageHutterFoam built without it) every check is skipped, saying
@@ -39,6 +43,11 @@
 project="$1"
 work="$2"
 . "$project/tests/application/testFunctions.sh"
+
+# The decomposed runs' backend (the serial reference runs on the CPU):
+# SH_PARALLEL_BACKEND=cuda on the GPU machine (gpuParallelCheck.sh)
+backend="${SH_PARALLEL_BACKEND:-cpu}"
+echo "Decomposed runs with -backend $backend, the serial run with -backend cpu"
 
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export OMP_NUM_THREADS=1
@@ -124,7 +133,7 @@ runParallel()
         cd "$dir" || exit 1
         decomposePar -force > log.decomposePar 2>&1 || exit 2
         mpirun --oversubscribe -np "$n" savageHutterFoam -parallel \
-            -backend cpu "$@" > log.savageHutterFoam 2>&1 || exit 3
+            -backend "$backend" "$@" > log.savageHutterFoam 2>&1 || exit 3
         reconstructPar > log.reconstructPar 2>&1 || exit 4
     )
 }
@@ -182,7 +191,7 @@ done
 dir="$(newCase staircase)"
 decomposeDict "$dir" 5 simple 5 1
 (cd "$dir" && decomposePar -force > log.decomposePar 2>&1)
-(cd "$dir" && mpirun --oversubscribe -np 5 savageHutterFoam -parallel -backend cpu > log.savageHutterFoam 2>&1)
+(cd "$dir" && mpirun --oversubscribe -np 5 savageHutterFoam -parallel -backend $backend > log.savageHutterFoam 2>&1)
 rc=$?
 written="$(cd "$dir" && ls -d processor*/[1-9]* processor*/0.[0-9]* 2>/dev/null)"
 if [ $rc -ne 0 ] && grep -q "not a rectangle" "$dir/log.savageHutterFoam" \
@@ -199,10 +208,10 @@ dir="$(newCase restart)"
 decomposeDict "$dir" 4 hierarchical 2 2
 setEntry "$dir/system/controlDict" endTime 0.2
 (cd "$dir" && decomposePar -force > log.decomposePar 2>&1 \
-    && mpirun --oversubscribe -np 4 savageHutterFoam -parallel -backend cpu > log.first 2>&1)
+    && mpirun --oversubscribe -np 4 savageHutterFoam -parallel -backend $backend > log.first 2>&1)
 rc1=$?
 setEntry "$dir/system/controlDict" endTime 0.4
-(cd "$dir" && mpirun --oversubscribe -np 4 savageHutterFoam -parallel -backend cpu > log.restart 2>&1 \
+(cd "$dir" && mpirun --oversubscribe -np 4 savageHutterFoam -parallel -backend $backend > log.restart 2>&1 \
     && reconstructPar > log.reconstructPar 2>&1)
 rc2=$?
 if [ $rc1 -eq 0 ] && [ $rc2 -eq 0 ] && grep -q "Create mesh for time = 0.2" "$dir/log.restart"
@@ -214,7 +223,7 @@ fi
 
 # The last time missing on one processor: all start from the one before
 rm -rf "$dir"/processor1/0.4 "$dir"/0.2 "$dir"/0.4
-(cd "$dir" && mpirun --oversubscribe -np 4 savageHutterFoam -parallel -backend cpu > log.agree 2>&1 \
+(cd "$dir" && mpirun --oversubscribe -np 4 savageHutterFoam -parallel -backend $backend > log.agree 2>&1 \
     && reconstructPar > log.reconstructPar2 2>&1)
 rc=$?
 if [ $rc -eq 0 ] && grep -q "all start from 0.2" "$dir/log.agree"
@@ -230,7 +239,7 @@ dir="$(newCase sigterm)"
 decomposeDict "$dir" 2 simple 2 1
 setEntry "$dir/system/controlDict" endTime 1000
 (cd "$dir" && decomposePar -force > log.decomposePar 2>&1)
-(cd "$dir" && exec mpirun --oversubscribe -np 2 savageHutterFoam -parallel -backend cpu -logInterval 0.1 > log.savageHutterFoam 2>&1) &
+(cd "$dir" && exec mpirun --oversubscribe -np 2 savageHutterFoam -parallel -backend $backend -logInterval 0.1 > log.savageHutterFoam 2>&1) &
 pid=$!
 waitFor "$dir/log.savageHutterFoam" "^Time = " 60
 sleep 0.5
@@ -247,7 +256,7 @@ then
     # serial run uninterrupted to it
     end="$(python3 -c "import math; print('%.9g' % ((math.floor($t0/0.2 + 1e-9) + 2)*0.2))")"
     setEntry "$dir/system/controlDict" endTime "$end"
-    (cd "$dir" && mpirun --oversubscribe -np 2 savageHutterFoam -parallel -backend cpu > log.restart 2>&1 \
+    (cd "$dir" && mpirun --oversubscribe -np 2 savageHutterFoam -parallel -backend $backend > log.restart 2>&1 \
         && reconstructPar -latestTime > log.reconstructPar 2>&1)
     rc=$?
     ser2="$work/serialTo$end"
