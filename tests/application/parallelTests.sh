@@ -18,9 +18,12 @@
 #         cells, bit for bit, and as reconstructed (reconstructPar writes a
 #         -0 as 0: the sign of zero aside); the steady-state report written
 #         with as many lines;
-#       - a decomposition that is not rectangles (simple (5 1 1): a
-#         staircase) refused naming the methods that work, non-zero exit,
-#         nothing written;
+#       - decompositions that are not a tensor product of rectangles
+#         refused naming the methods that work, non-zero exit, nothing
+#         written, no hang: simple (5 1 1) (a staircase), a manual
+#         T-junction, a manual part one column wide; a side of the block
+#         with two conditions on two processors' parts refused;
+#       - a restart with pMax missing on one processor: all do without it;
 #       - a parallel restart (startFrom latestTime, (2 2 1)) continues to
 #         the serial run's files; so does one whose last time is missing on
 #         one processor (the processors agree on the earlier time);
@@ -203,6 +206,67 @@ else
     fail "simple (5 1 1), a staircase: exit $rc, written '$written' (see $dir/log.savageHutterFoam)"
 fi
 
+#- refusedSplit <name> <n> <log pattern> <what>: a manual decomposition
+#  (constant/cellDecomposition written by the caller into $dir) refused
+#  within 120 s, naming the methods that work, nothing written
+refusedSplit()
+{
+    local name="$1" n="$2" pattern="$3" what="$4" rc written
+    (cd "$dir" && decomposePar -force > log.decomposePar 2>&1)
+    (cd "$dir" && timeout 120 mpirun --oversubscribe -np "$n" savageHutterFoam -parallel -backend $backend > log.savageHutterFoam 2>&1)
+    rc=$?
+    written="$(cd "$dir" && ls -d processor*/[1-9]* processor*/0.[0-9]* 2>/dev/null)"
+    if [ $rc -ne 0 ] && [ $rc -ne 124 ] && grep -q "$pattern" "$dir/log.savageHutterFoam" \
+        && grep -q "method simple or hierarchical" "$dir/log.savageHutterFoam" \
+        && [ -z "$written" ]
+    then
+        pass "$what: refused ($(grep -m1 "$pattern" "$dir/log.savageHutterFoam" | cut -c1-110)...)"
+    else
+        fail "$what: exit $rc (124: hung), written '$written' (see $dir/log.savageHutterFoam)"
+    fi
+}
+
+#- manualSplit <dir> <awk expression of i, j giving the part>
+manualSplit()
+{
+    {
+        echo 'FoamFile { version 2.0; format ascii; class labelList; object cellDecomposition; }'
+        echo 576
+        echo '('
+        awk "BEGIN { for (j = 0; j < 12; j++) for (i = 0; i < 48; i++) print $2 }"
+        echo ')'
+    } > "$1/constant/cellDecomposition"
+}
+
+# A T-junction: part 0 the left half, parts 1 and 2 the right half's
+# bottom and top: part 0's side meets two neighbours
+dir="$(newCase tJunction)"
+decomposeDict "$dir" 3 manual 1 1
+manualSplit "$dir" '(i < 24 ? 0 : (j < 6 ? 1 : 2))'
+refusedSplit tJunction 3 "neighbours do not share whole sides" "manual T-junction"
+
+# A part one column wide (narrower than the two ghost layers)
+dir="$(newCase narrowPart)"
+decomposeDict "$dir" 2 manual 1 1
+manualSplit "$dir" '(i < 47 ? 0 : 1)'
+refusedSplit narrowPart 2 "narrower than the" "manual split with a part one column wide"
+
+# The inflow side cut in two (1 2 1), one half made transmissive in the
+# decomposed fields: a side with two conditions, refused as in serial
+dir="$(newCase mixedSide)"
+decomposeDict "$dir" 2 simple 1 2
+(cd "$dir" && decomposePar -force > log.decomposePar 2>&1)
+setEntry "$dir/processor1/0/h" boundaryField/upslope "{ type zeroGradient; }"
+setEntry "$dir/processor1/0/U" boundaryField/upslope "{ type zeroGradient; }"
+(cd "$dir" && timeout 120 mpirun --oversubscribe -np 2 savageHutterFoam -parallel -backend $backend > log.savageHutterFoam 2>&1)
+rc=$?
+if [ $rc -ne 0 ] && [ $rc -ne 124 ] && grep -q "different conditions on different processors" "$dir/log.savageHutterFoam"
+then
+    pass "xMin inflow on processor 0, transmissive on processor 1: refused"
+else
+    fail "xMin with two conditions across processors: exit $rc (124: hung; see $dir/log.savageHutterFoam)"
+fi
+
 # A parallel restart: to 0.2, then on to 0.4 from latestTime
 dir="$(newCase restart)"
 decomposeDict "$dir" 4 hierarchical 2 2
@@ -233,12 +297,33 @@ else
     fail "restart with 0.4 missing on processor 1: exit $rc (see $dir/log.agree)"
 fi
 
+# A restart file missing on one processor (as the hint for an unreadable
+# one suggests): every processor does without it, and the run goes on
+dir="$(newCase missingPMax)"
+decomposeDict "$dir" 2 simple 2 1
+setEntry "$dir/system/controlDict" endTime 0.2
+(cd "$dir" && decomposePar -force > log.decomposePar 2>&1 \
+    && timeout 120 mpirun --oversubscribe -np 2 savageHutterFoam -parallel -backend $backend > log.first 2>&1)
+rm -f "$dir/processor1/0.2/pMax"
+setEntry "$dir/system/controlDict" endTime 0.4
+(cd "$dir" && timeout 120 mpirun --oversubscribe -np 2 savageHutterFoam -parallel -backend $backend > log.restart 2>&1)
+rc=$?
+if [ $rc -eq 0 ] && grep -q "pMax is missing on other processors" "$dir/log.restart" \
+    && [ -f "$dir/processor0/0.4/pMax" ] && [ -f "$dir/processor1/0.4/pMax" ]
+then
+    pass "restart with pMax missing on processor 1: both do without it and run to 0.4"
+else
+    fail "restart with pMax missing on processor 1: exit $rc (124: hung; see $dir/log.restart)"
+fi
+
 # SIGTERM to mpirun: every processor writes the same time and stops; a
 # parallel restart from there reaches the serial run's state
 dir="$(newCase sigterm)"
 decomposeDict "$dir" 2 simple 2 1
 setEntry "$dir/system/controlDict" endTime 1000
 (cd "$dir" && decomposePar -force > log.decomposePar 2>&1)
+# (mpirun kills the processes about 1 s after forwarding SIGTERM: this
+# case of 576 cells writes in milliseconds)
 (cd "$dir" && exec mpirun --oversubscribe -np 2 savageHutterFoam -parallel -backend $backend -logInterval 0.1 > log.savageHutterFoam 2>&1) &
 pid=$!
 waitFor "$dir/log.savageHutterFoam" "^Time = " 60

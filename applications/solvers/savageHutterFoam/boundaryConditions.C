@@ -172,6 +172,34 @@ FixedList<sideCondition, 4> readBoundaryConditions
             }
         }
     }
+    // Decomposed: a side of the whole grid is one condition over all the
+    // processors along it, as in the serial run (each saw its own part)
+    if (Pstream::parRun())
+    {
+        for (label s = 0; s < 4; ++s)
+        {
+            const bool on = smesh.neighbour(s) < 0;
+            const sideCondition& c = sides[s];
+            const scalar values[5] =
+                {scalar(int(c.type)), c.h, c.U.x(), c.U.y(), c.U.z()};
+            bool same = true;
+            for (const scalar v : values)
+            {
+                const scalar lo = returnReduce(on ? v : VGREAT, minOp<scalar>());
+                const scalar hi = returnReduce(on ? v : -VGREAT, maxOp<scalar>());
+                same = same && hi - lo <= 1e-12*(1 + max(mag(lo), mag(hi)));
+            }
+            if (!same)
+            {
+                FatalIOErrorInFunction(U.objectPath())
+                    << "Side " << structuredMesh::sideNames[s] << " of the"
+                    << " block has different conditions on different"
+                    << " processors' parts (this one: patch " << c.patch
+                    << "); one condition per side of the block is"
+                    << " supported." << nl << exit(FatalIOError);
+            }
+        }
+    }
     return sides;
 }
 

@@ -196,6 +196,22 @@ void removeUnsharedTimes(const fileName& processorDir)
     {
         return;
     }
+    // Only when every processor holds that earliest latest time: else the
+    // directories are not a stopped run's (a processor without times, or
+    // times that do not nest), and nothing is removed (Time then names
+    // the processors whose start times differ)
+    bool holds = false;
+    forAll(times, i)
+    {
+        holds = holds || times[i].value() == common;
+    }
+    if (!returnReduce(holds, andOp<bool>()))
+    {
+        Info<< "The processors' latest times range over [" << common << ", "
+            << latest << "], and not every processor holds " << common
+            << ": nothing removed" << nl << endl;
+        return;
+    }
     forAll(times, i)
     {
         if (times[i].value() > common)
@@ -276,6 +292,11 @@ namespace
         }
     }
     Perr<< nl << "FOAM exiting" << nl << endl;
+    if (Pstream::parRun())
+    {
+        // Every processor ends, not only this one (as FatalError does)
+        UPstream::abort();
+    }
     std::exit(1);
 }
 
