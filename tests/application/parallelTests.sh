@@ -102,6 +102,17 @@ cp -r "$base" "$serial"
 serialTimes="$(timeDirs "$serial" | tr '\n' ' ')"
 [ "$serialTimes" = "0.2 0.4 " ] || fail "the serial run wrote '$serialTimes', not 0.2 0.4"
 
+#- runDecomposed <n> <log> [args]: mpirun -np <n> savageHutterFoam -parallel
+#  in the current directory, its output in <log>; status 124 when it has
+#  not ended within 300 s (a hang)
+runDecomposed()
+{
+    local n="$1" log="$2"
+    shift 2
+    timeout 300 mpirun --oversubscribe -np "$n" savageHutterFoam -parallel \
+        -backend "$backend" "$@" > "$log" 2>&1
+}
+
 #- decomposeDict <case> <n> <method> [<nx> <ny>]: system/decomposeParDict
 decomposeDict()
 {
@@ -135,8 +146,7 @@ runParallel()
     (
         cd "$dir" || exit 1
         decomposePar -force > log.decomposePar 2>&1 || exit 2
-        mpirun --oversubscribe -np "$n" savageHutterFoam -parallel \
-            -backend "$backend" "$@" > log.savageHutterFoam 2>&1 || exit 3
+        runDecomposed "$n" log.savageHutterFoam "$@" || exit 3
         reconstructPar > log.reconstructPar 2>&1 || exit 4
     )
 }
@@ -194,7 +204,7 @@ done
 dir="$(newCase staircase)"
 decomposeDict "$dir" 5 simple 5 1
 (cd "$dir" && decomposePar -force > log.decomposePar 2>&1)
-(cd "$dir" && mpirun --oversubscribe -np 5 savageHutterFoam -parallel -backend $backend > log.savageHutterFoam 2>&1)
+(cd "$dir" && runDecomposed 5 log.savageHutterFoam)
 rc=$?
 written="$(cd "$dir" && ls -d processor*/[1-9]* processor*/0.[0-9]* 2>/dev/null)"
 if [ $rc -ne 0 ] && grep -q "not a rectangle" "$dir/log.savageHutterFoam" \
@@ -213,7 +223,7 @@ refusedSplit()
 {
     local name="$1" n="$2" pattern="$3" what="$4" rc written
     (cd "$dir" && decomposePar -force > log.decomposePar 2>&1)
-    (cd "$dir" && timeout 120 mpirun --oversubscribe -np "$n" savageHutterFoam -parallel -backend $backend > log.savageHutterFoam 2>&1)
+    (cd "$dir" && runDecomposed "$n" log.savageHutterFoam)
     rc=$?
     written="$(cd "$dir" && ls -d processor*/[1-9]* processor*/0.[0-9]* 2>/dev/null)"
     if [ $rc -ne 0 ] && [ $rc -ne 124 ] && grep -q "$pattern" "$dir/log.savageHutterFoam" \
@@ -258,7 +268,7 @@ decomposeDict "$dir" 2 simple 1 2
 (cd "$dir" && decomposePar -force > log.decomposePar 2>&1)
 setEntry "$dir/processor1/0/h" boundaryField/upslope "{ type zeroGradient; }"
 setEntry "$dir/processor1/0/U" boundaryField/upslope "{ type zeroGradient; }"
-(cd "$dir" && timeout 120 mpirun --oversubscribe -np 2 savageHutterFoam -parallel -backend $backend > log.savageHutterFoam 2>&1)
+(cd "$dir" && runDecomposed 2 log.savageHutterFoam)
 rc=$?
 if [ $rc -ne 0 ] && [ $rc -ne 124 ] && grep -q "different conditions on different processors" "$dir/log.savageHutterFoam"
 then
@@ -272,10 +282,10 @@ dir="$(newCase restart)"
 decomposeDict "$dir" 4 hierarchical 2 2
 setEntry "$dir/system/controlDict" endTime 0.2
 (cd "$dir" && decomposePar -force > log.decomposePar 2>&1 \
-    && mpirun --oversubscribe -np 4 savageHutterFoam -parallel -backend $backend > log.first 2>&1)
+    && runDecomposed 4 log.first)
 rc1=$?
 setEntry "$dir/system/controlDict" endTime 0.4
-(cd "$dir" && mpirun --oversubscribe -np 4 savageHutterFoam -parallel -backend $backend > log.restart 2>&1 \
+(cd "$dir" && runDecomposed 4 log.restart \
     && reconstructPar > log.reconstructPar 2>&1)
 rc2=$?
 if [ $rc1 -eq 0 ] && [ $rc2 -eq 0 ] && grep -q "Create mesh for time = 0.2" "$dir/log.restart"
@@ -287,7 +297,7 @@ fi
 
 # The last time missing on one processor: all start from the one before
 rm -rf "$dir"/processor1/0.4 "$dir"/0.2 "$dir"/0.4
-(cd "$dir" && mpirun --oversubscribe -np 4 savageHutterFoam -parallel -backend $backend > log.agree 2>&1 \
+(cd "$dir" && runDecomposed 4 log.agree \
     && reconstructPar > log.reconstructPar2 2>&1)
 rc=$?
 if [ $rc -eq 0 ] && grep -q "all start from 0.2" "$dir/log.agree"
@@ -303,10 +313,10 @@ dir="$(newCase missingPMax)"
 decomposeDict "$dir" 2 simple 2 1
 setEntry "$dir/system/controlDict" endTime 0.2
 (cd "$dir" && decomposePar -force > log.decomposePar 2>&1 \
-    && timeout 120 mpirun --oversubscribe -np 2 savageHutterFoam -parallel -backend $backend > log.first 2>&1)
+    && runDecomposed 2 log.first)
 rm -f "$dir/processor1/0.2/pMax"
 setEntry "$dir/system/controlDict" endTime 0.4
-(cd "$dir" && timeout 120 mpirun --oversubscribe -np 2 savageHutterFoam -parallel -backend $backend > log.restart 2>&1)
+(cd "$dir" && runDecomposed 2 log.restart)
 rc=$?
 if [ $rc -eq 0 ] && grep -q "pMax is missing on other processors" "$dir/log.restart" \
     && [ -f "$dir/processor0/0.4/pMax" ] && [ -f "$dir/processor1/0.4/pMax" ]
@@ -341,7 +351,7 @@ then
     # serial run uninterrupted to it
     end="$(python3 -c "import math; print('%.9g' % ((math.floor($t0/0.2 + 1e-9) + 2)*0.2))")"
     setEntry "$dir/system/controlDict" endTime "$end"
-    (cd "$dir" && mpirun --oversubscribe -np 2 savageHutterFoam -parallel -backend $backend > log.restart 2>&1 \
+    (cd "$dir" && runDecomposed 2 log.restart \
         && reconstructPar -latestTime > log.reconstructPar 2>&1)
     rc=$?
     ser2="$work/serialTo$end"

@@ -34,6 +34,22 @@ fi
 passed=0
 failed=0
 skipped=0
+
+#- verdict <run> <what it did> <its log>: PASS, or FAIL with $problems and
+#  the log's end; counted
+verdict()
+{
+    if [ -z "$problems" ]
+    then
+        echo "PASS  $1 ($2)"
+        passed=$((passed + 1))
+    else
+        echo "FAIL  $1:$problems (see $3)"
+        tail -n 20 "$3"
+        failed=$((failed + 1))
+    fi
+    echo
+}
 rm -rf "$work"
 mkdir -p "$work"
 for t in "${tutorials[@]}"
@@ -60,16 +76,7 @@ do
         problems="$problems plot --check failed;"
     fi
     cat "$work/$t.check.log"
-    if [ -z "$problems" ]
-    then
-        echo "PASS  $t ($nSolver solver runs)"
-        passed=$((passed + 1))
-    else
-        echo "FAIL  $t:$problems (see $work/$t.Allrun.log)"
-        tail -n 20 "$work/$t.Allrun.log"
-        failed=$((failed + 1))
-    fi
-    echo
+    verdict "$t" "$nSolver solver runs" "$work/$t.Allrun.log"
 
     # Its decomposed run, shortened (2 processes, checked against the
     # serial run cell by cell)
@@ -96,16 +103,8 @@ do
         problems="$problems the decomposed run is not the serial one ($compare);"
     fi
     [ -f "$compare" ] && cat "$compare"
-    if [ -z "$problems" ]
-    then
-        echo "PASS  $t/Allrun-parallel (2 processes, the serial run's fields)"
-        passed=$((passed + 1))
-    else
-        echo "FAIL  $t/Allrun-parallel:$problems (see $work/$t-parallel.Allrun.log)"
-        tail -n 20 "$work/$t-parallel.Allrun.log"
-        failed=$((failed + 1))
-    fi
-    echo
+    verdict "$t/Allrun-parallel" "2 processes, the serial run's fields" \
+        "$work/$t-parallel.Allrun.log"
 done
 
 echo "$passed passed, $failed failed, $skipped skipped"
