@@ -28,6 +28,70 @@ int mirrored(int k, int n)
     return k;
 }
 
+//- Cells are indexed with int (physics/grid.H), ghost layers included:
+//  nx x ny cells (`what` names them) must stay below 2^31 with them
+template<class Real>
+void checkIndexable(int nx, int ny, const std::string& what)
+{
+    const long long padded =
+        (long long)(nx + 2*Grid<Real>::ng)*(ny + 2*Grid<Real>::ng);
+    if (padded > 2147483647LL)
+    {
+        throw std::invalid_argument
+        (
+            "Problem: " + what + std::to_string(nx) + " x "
+          + std::to_string(ny) + " cells is more than the 2^31 - 1 cells"
+            " (with two ghost layers) that the grid's int indices reach"
+        );
+    }
+}
+
+//- The whole grid of nx x ny cells on the bounds: its spacing (and
+//  reciprocals), origin and counts, formed alike for a whole problem and
+//  for a part of it
+template<class Real>
+void setWholeGrid
+(
+    Problem<Real>& pb,
+    int nx,
+    int ny,
+    double xMin,
+    double xMax,
+    double yMin,
+    double yMax
+)
+{
+    if (nx < 1 || ny < 1 || !(xMax > xMin) || !(yMax > yMin))
+    {
+        throw std::invalid_argument("Problem: empty or inverted grid");
+    }
+    Grid<Real>& g = pb.grid;
+    pb.wholeNx = nx;
+    pb.wholeNy = ny;
+    g.nx = nx;
+    g.ny = ny;
+    g.dx = Real((xMax - xMin)/nx);
+    g.dy = Real((yMax - yMin)/ny);
+    g.rdx = Real(1)/g.dx;
+    g.rdy = Real(1)/g.dy;
+    g.x0 = Real(xMin);
+    g.y0 = Real(yMin);
+}
+
+//- Columns and cells of the problem's grid, zero
+template<class Real>
+void allocateArrays(Problem<Real>& pb)
+{
+    const int nx = pb.grid.nx;
+    const std::size_t n = std::size_t(nx)*pb.grid.ny;
+    pb.zeta.assign(nx, Real(0));
+    pb.kappa.assign(nx, Real(0));
+    pb.zb.assign(n, Real(0));
+    pb.h.assign(n, Real(0));
+    pb.hu.assign(n, Real(0));
+    pb.hv.assign(n, Real(0));
+}
+
 } // namespace
 
 template<class Real>
@@ -44,38 +108,9 @@ Problem<Real>::Problem
 :
     params(p)
 {
-    if (nx < 1 || ny < 1 || !(xMax > xMin) || !(yMax > yMin))
-    {
-        throw std::invalid_argument("Problem: empty or inverted grid");
-    }
-    // Cells are indexed with int (physics/grid.H), ghost layers included
-    const long long padded =
-        (long long)(nx + 2*Grid<Real>::ng)*(ny + 2*Grid<Real>::ng);
-    if (padded > 2147483647LL)
-    {
-        throw std::invalid_argument
-        (
-            "Problem: " + std::to_string(nx) + " x " + std::to_string(ny)
-          + " cells is more than the 2^31 - 1 cells (with two ghost layers)"
-            " that the grid's int indices reach"
-        );
-    }
-    wholeNx = nx;
-    wholeNy = ny;
-    grid.nx = nx;
-    grid.ny = ny;
-    grid.dx = Real((xMax - xMin)/nx);
-    grid.dy = Real((yMax - yMin)/ny);
-    grid.rdx = Real(1)/grid.dx;
-    grid.rdy = Real(1)/grid.dy;
-    grid.x0 = Real(xMin);
-    grid.y0 = Real(yMin);
-    zeta.assign(nx, Real(0));
-    kappa.assign(nx, Real(0));
-    zb.assign(std::size_t(nx)*ny, Real(0));
-    h.assign(std::size_t(nx)*ny, Real(0));
-    hu.assign(std::size_t(nx)*ny, Real(0));
-    hv.assign(std::size_t(nx)*ny, Real(0));
+    setWholeGrid(*this, nx, ny, xMin, xMax, yMin, yMax);
+    checkIndexable<Real>(nx, ny, "");
+    allocateArrays(*this);
 }
 
 
@@ -90,14 +125,14 @@ Problem<Real>::Problem
     double yMax
 )
 :
-    // The whole grid's spacing and origin, on a 1 x 1 grid (its arrays
-    // then sized for the part: the whole grid's are never held)
-    Problem(p, 1, 1, xMin, xMax, yMin, yMax)
+    params(p)
 {
+    // The whole grid's spacing and origin; the part's cells only (the
+    // whole grid's arrays are never held)
+    setWholeGrid(*this, s.nxWhole, s.nyWhole, xMin, xMax, yMin, yMax);
     if
     (
-        s.nxWhole < 1 || s.nyWhole < 1 || s.nx < 1 || s.ny < 1
-     || s.i0 < 0 || s.j0 < 0
+        s.nx < 1 || s.ny < 1 || s.i0 < 0 || s.j0 < 0
      || s.i0 + s.nx > s.nxWhole || s.j0 + s.ny > s.nyWhole
     )
     {
@@ -109,28 +144,11 @@ Problem<Real>::Problem
           + std::to_string(s.nxWhole) + " x " + std::to_string(s.nyWhole)
         );
     }
-    // As the whole grid's constructor forms them
-    grid.dx = Real((xMax - xMin)/s.nxWhole);
-    grid.dy = Real((yMax - yMin)/s.nyWhole);
-    grid.rdx = Real(1)/grid.dx;
-    grid.rdy = Real(1)/grid.dy;
-    wholeNx = s.nxWhole;
-    wholeNy = s.nyWhole;
     grid.nx = s.nx;
     grid.ny = s.ny;
     grid.i0 = s.i0;
     grid.j0 = s.j0;
-    const long long padded =
-        (long long)(s.nx + 2*Grid<Real>::ng)*(s.ny + 2*Grid<Real>::ng);
-    if (padded > 2147483647LL)
-    {
-        throw std::invalid_argument
-        (
-            "Problem: a part of " + std::to_string(s.nx) + " x "
-          + std::to_string(s.ny) + " cells is more than the 2^31 - 1 cells"
-            " (with two ghost layers) that the grid's int indices reach"
-        );
-    }
+    checkIndexable<Real>(s.nx, s.ny, "a part of ");
     for (int side = 0; side < 4; ++side)
     {
         if (s.processorSide(side))
@@ -138,13 +156,7 @@ Problem<Real>::Problem
             bc.type[side] = BCType::processor;
         }
     }
-    zeta.assign(s.nx, Real(0));
-    kappa.assign(s.nx, Real(0));
-    const std::size_t n = std::size_t(s.nx)*s.ny;
-    zb.assign(n, Real(0));
-    h.assign(n, Real(0));
-    hu.assign(n, Real(0));
-    hv.assign(n, Real(0));
+    allocateArrays(*this);
 }
 
 
