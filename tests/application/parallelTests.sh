@@ -277,14 +277,24 @@ else
     fail "xMin with two conditions across processors: exit $rc (124: hung; see $dir/log.savageHutterFoam)"
 fi
 
+#- firstPart <case> <n>: decomposePar, the decomposed run to 0.2
+#  (log.first), endTime back to 0.4 for the restart; the run's status
+firstPart()
+{
+    local rc
+    setEntry "$1/system/controlDict" endTime 0.2
+    (cd "$1" && decomposePar -force > log.decomposePar 2>&1 \
+        && runDecomposed "$2" log.first)
+    rc=$?
+    setEntry "$1/system/controlDict" endTime 0.4
+    return $rc
+}
+
 # A parallel restart: to 0.2, then on to 0.4 from latestTime
 dir="$(newCase restart)"
 decomposeDict "$dir" 4 hierarchical 2 2
-setEntry "$dir/system/controlDict" endTime 0.2
-(cd "$dir" && decomposePar -force > log.decomposePar 2>&1 \
-    && runDecomposed 4 log.first)
+firstPart "$dir" 4
 rc1=$?
-setEntry "$dir/system/controlDict" endTime 0.4
 (cd "$dir" && runDecomposed 4 log.restart \
     && reconstructPar > log.reconstructPar 2>&1)
 rc2=$?
@@ -311,11 +321,8 @@ fi
 # one suggests): every processor does without it, and the run goes on
 dir="$(newCase missingPMax)"
 decomposeDict "$dir" 2 simple 2 1
-setEntry "$dir/system/controlDict" endTime 0.2
-(cd "$dir" && decomposePar -force > log.decomposePar 2>&1 \
-    && runDecomposed 2 log.first)
+firstPart "$dir" 2
 rm -f "$dir/processor1/0.2/pMax"
-setEntry "$dir/system/controlDict" endTime 0.4
 (cd "$dir" && runDecomposed 2 log.restart)
 rc=$?
 if [ $rc -eq 0 ] && grep -q "pMax is missing on other processors" "$dir/log.restart" \
