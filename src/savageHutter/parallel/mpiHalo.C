@@ -1,6 +1,12 @@
 #include "mpiHalo.H"
 
+// Open MPI's extensions: MPIX_Query_cuda_support()
+#if defined(OPEN_MPI) && OPEN_MPI
+#   include <mpi-ext.h>
+#endif
+
 #include <climits>
+#include <cstdlib>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -203,6 +209,24 @@ std::string splitError(const std::vector<Subdomain>& subs)
     return "";
 }
 
+//- Whether the MPI library reads and writes CUDA device memory itself:
+//  Open MPI says so at run time (MPIX_Query_cuda_support, the library
+//  loaded, not the headers built against); other MPIs are not asked.
+//  SH_CUDA_AWARE_MPI=0 in the environment stages through the host anyway.
+bool queryDeviceMemory()
+{
+    const char* env = std::getenv("SH_CUDA_AWARE_MPI");
+    if (env && std::string(env) == "0")
+    {
+        return false;
+    }
+#if defined(OMPI_HAVE_MPI_EXT_CUDA) && OMPI_HAVE_MPI_EXT_CUDA
+    return MPIX_Query_cuda_support() == 1;
+#else
+    return false;
+#endif
+}
+
 } // namespace
 
 
@@ -246,6 +270,7 @@ MpiHalo<Real>::MpiHalo(MPI_Comm comm, const Subdomain& s)
         check(MPI_Comm_rank(comm_, &rank_), "MPI_Comm_rank");
         check(MPI_Comm_size(comm_, &size_), "MPI_Comm_size");
         validate();
+        deviceMemory_ = queryDeviceMemory();
     }
     catch (...)
     {
@@ -344,18 +369,84 @@ void MpiHalo<Real>::exchange(int dir, Real* const* arrays, int n, int width)
         return;
     }
 
-    const int nx = sub_.nx;
-    const int ny = sub_.ny;
-    const int stride = nx + 2*ng;
-    const auto idx = [=](int i, int j)
+    const Strips strips = {dir, width, sub_.nx, sub_.ny};
+    const std::size_t per = std::size_t(strips.perArray());
+    Real* send[2];
+    Real* recv[2];
+    for (int b = 0; b < 2; ++b)
     {
-        return std::size_t(i + ng) + std::size_t(j + ng)*stride;
-    };
-    // Values per array: width columns of the interior rows, or width whole
-    // padded rows
-    const long long perArray =
-        (long long)(width)*(dir == 0 ? ny : stride);
-    const long long total = perArray*n;
+        if (send_[b].size() < per*n)
+        {
+            send_[b].resize(per*n);
+            recv_[b].resize(per*n);
+        }
+        send[b] = send_[b].data();
+        recv[b] = recv_[b].data();
+        if (!sub_.processorSide(first + b))
+        {
+            continue;
+        }
+        for (int a = 0; a < n; ++a)
+        {
+            for (std::size_t k = 0; k < per; ++k)
+            {
+                send[b][a*per + k] =
+                    arrays[a][strips.cell(first + b, false, int(k))];
+            }
+        }
+    }
+
+    exchangePacked(strips, n, send, recv);
+
+    for (int b = 0; b < 2; ++b)
+    {
+        if (!sub_.processorSide(first + b))
+        {
+            continue;
+        }
+        for (int a = 0; a < n; ++a)
+        {
+            for (std::size_t k = 0; k < per; ++k)
+            {
+                arrays[a][strips.cell(first + b, true, int(k))] =
+                    recv[b][a*per + k];
+            }
+        }
+    }
+}
+
+
+template<class Real>
+void MpiHalo<Real>::exchangePacked
+(
+    const Strips& strips,
+    int n,
+    Real* const send[2],
+    Real* const recv[2]
+)
+{
+    const int dir = strips.dir;
+    const int first = 2*dir;            // xMin or yMin
+    if (dir != 0 && dir != 1)
+    {
+        throw std::invalid_argument
+        (
+            "MpiHalo::exchangePacked: direction " + std::to_string(dir)
+          + " (0: x-sides, 1: y-sides)"
+        );
+    }
+    if (strips.nx != sub_.nx || strips.ny != sub_.ny)
+    {
+        throw std::invalid_argument
+        (
+            "MpiHalo::exchangePacked: strips of a " + std::to_string(strips.nx)
+          + " x " + std::to_string(strips.ny) + " grid on a subdomain of "
+          + std::to_string(sub_.nx) + " x " + std::to_string(sub_.ny)
+        );
+    }
+    // Values per message: n arrays of width columns of the interior rows,
+    // or of width whole padded rows
+    const long long total = (long long)(strips.perArray())*n;
     if (total > INT_MAX)
     {
         throw std::runtime_error
@@ -365,6 +456,14 @@ void MpiHalo<Real>::exchange(int dir, Real* const* arrays, int n, int width)
         );
     }
     const int count = int(total);
+    if
+    (
+        count == 0
+     || (!sub_.processorSide(first) && !sub_.processorSide(first + 1))
+    )
+    {
+        return;
+    }
     const MPI_Datatype type = mpiType<Real>();
 
     MPI_Request requests[4];
@@ -396,17 +495,12 @@ void MpiHalo<Real>::exchange(int dir, Real* const* arrays, int n, int width)
             {
                 continue;
             }
-            std::vector<Real>& buf = recv_[side];
-            if (buf.size() < std::size_t(count))
-            {
-                buf.resize(count);
-            }
             check
             (
                 MPI_Irecv
                 (
-                    buf.data(), count, type, sub_.neighbour[side], side, comm_,
-                    &requests[nRecv]
+                    recv[side - first], count, type, sub_.neighbour[side],
+                    side, comm_, &requests[nRecv]
                 ),
                 "MPI_Irecv"
             );
@@ -419,49 +513,12 @@ void MpiHalo<Real>::exchange(int dir, Real* const* arrays, int n, int width)
             {
                 continue;
             }
-            std::vector<Real>& buf = send_[side];
-            if (buf.size() < std::size_t(count))
-            {
-                buf.resize(count);
-            }
-            Real* p = buf.data();
-            if (dir == 0)
-            {
-                const int i1 = side == xMin ? 0 : nx - width;
-                for (int a = 0; a < n; ++a)
-                {
-                    const Real* f = arrays[a];
-                    for (int j = 0; j < ny; ++j)
-                    {
-                        const Real* row = f + idx(i1, j);
-                        for (int k = 0; k < width; ++k)
-                        {
-                            *p++ = row[k];
-                        }
-                    }
-                }
-            }
-            else
-            {
-                const int j1 = side == yMin ? 0 : ny - width;
-                for (int a = 0; a < n; ++a)
-                {
-                    for (int k = 0; k < width; ++k)
-                    {
-                        std::memcpy
-                        (
-                            p, arrays[a] + idx(-ng, j1 + k), stride*sizeof(Real)
-                        );
-                        p += stride;
-                    }
-                }
-            }
             // Tagged with the side at which it arrives
             check
             (
                 MPI_Isend
                 (
-                    buf.data(), count, type, sub_.neighbour[side],
+                    send[side - first], count, type, sub_.neighbour[side],
                     opposite(side), comm_, &requests[nReq]
                 ),
                 "MPI_Isend"
@@ -479,7 +536,6 @@ void MpiHalo<Real>::exchange(int dir, Real* const* arrays, int n, int width)
     const int code = MPI_Waitall(nReq, requests, statuses);
     if (code != MPI_SUCCESS)
     {
-        std::string which = "MPI_Waitall";
         if (code == MPI_ERR_IN_STATUS)
         {
             for (int r = 0; r < nReq; ++r)
@@ -515,38 +571,6 @@ void MpiHalo<Real>::exchange(int dir, Real* const* arrays, int n, int width)
               + std::to_string(count)
             );
         }
-        const Real* p = recv_[side].data();
-        if (dir == 0)
-        {
-            const int i1 = side == xMin ? -width : nx;
-            for (int a = 0; a < n; ++a)
-            {
-                Real* f = arrays[a];
-                for (int j = 0; j < ny; ++j)
-                {
-                    Real* row = f + idx(i1, j);
-                    for (int k = 0; k < width; ++k)
-                    {
-                        row[k] = *p++;
-                    }
-                }
-            }
-        }
-        else
-        {
-            const int j1 = side == yMin ? -width : ny;
-            for (int a = 0; a < n; ++a)
-            {
-                for (int k = 0; k < width; ++k)
-                {
-                    std::memcpy
-                    (
-                        arrays[a] + idx(-ng, j1 + k), p, stride*sizeof(Real)
-                    );
-                    p += stride;
-                }
-            }
-        }
     }
 }
 
@@ -561,6 +585,23 @@ Real MpiHalo<Real>::maxAll(Real x)
         "MPI_Allreduce (MPI_MAX)"
     );
     return r;
+}
+
+
+template<class Real>
+Real MpiHalo<Real>::maxAll(Real x, bool& stop)
+{
+    // Both as doubles (exact for float), the flag as 0 or 1: the maximum
+    // of the pair is the pair of maxima
+    double v[2] = {double(x), stop ? 1.0 : 0.0};
+    double r[2] = {v[0], v[1]};
+    check
+    (
+        MPI_Allreduce(v, r, 2, MPI_DOUBLE, MPI_MAX, comm_),
+        "MPI_Allreduce (MPI_MAX, the rate and the stop)"
+    );
+    stop = r[1] != 0.0;
+    return Real(r[0]);
 }
 
 
