@@ -7,6 +7,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "cudaSolver.H"
+#include "../ensemble/ensembleSolver.H"
 
 #include <stdexcept>
 
@@ -77,6 +78,25 @@ template std::unique_ptr<Solver<double>> makeCudaSolver
 template std::unique_ptr<Solver<float>> makeCudaSolver
 (
     const Problem<float>&, Halo<float>*
+);
+
+
+template<class Real>
+std::unique_ptr<EnsembleSolver<Real>> makeCudaEnsemble
+(
+    const std::vector<Problem<Real>>&
+)
+{
+    throw std::runtime_error(std::string("CUDA backend: ") + notBuilt);
+}
+
+template std::unique_ptr<EnsembleSolver<double>> makeCudaEnsemble
+(
+    const std::vector<Problem<double>>&
+);
+template std::unique_ptr<EnsembleSolver<float>> makeCudaEnsemble
+(
+    const std::vector<Problem<float>>&
 );
 
 } // namespace sh

@@ -1,0 +1,90 @@
+#include "ensembleSolver.H"
+
+#include <cstring>
+#include <stdexcept>
+
+namespace sh
+{
+
+namespace
+{
+
+template<class T>
+bool sameBits(const std::vector<T>& a, const std::vector<T>& b)
+{
+    return a.size() == b.size()
+        && (a.empty() || std::memcmp(a.data(), b.data(), a.size()*sizeof(T)) == 0);
+}
+
+template<class Real>
+bool sameBits(const Real& a, const Real& b)
+{
+    return std::memcmp(&a, &b, sizeof(Real)) == 0;
+}
+
+} // namespace
+
+
+template<class Real>
+void checkEnsemble(const std::vector<Problem<Real>>& members)
+{
+    if (members.empty())
+    {
+        throw std::invalid_argument("ensemble: no members");
+    }
+    const Problem<Real>& first = members[0];
+    if (first.isPart())
+    {
+        throw std::invalid_argument
+        (
+            "ensemble: member 0 is a part of a decomposed grid (ensembles"
+            " run serial)"
+        );
+    }
+    for (std::size_t k = 1; k < members.size(); ++k)
+    {
+        const Problem<Real>& m = members[k];
+        std::string what;
+        const Grid<Real>& a = first.grid;
+        const Grid<Real>& b = m.grid;
+        if
+        (
+            a.nx != b.nx || a.ny != b.ny || !sameBits(a.dx, b.dx)
+         || !sameBits(a.dy, b.dy) || !sameBits(a.x0, b.x0)
+         || !sameBits(a.y0, b.y0) || m.isPart()
+        )
+        {
+            what = "grid";
+        }
+        else if (std::memcmp(&first.bc, &m.bc, sizeof(first.bc)) != 0)
+        {
+            what = "boundary conditions";
+        }
+        else if (!sameBits(first.zeta, m.zeta) || !sameBits(first.kappa, m.kappa))
+        {
+            what = "reference surface (inclination)";
+        }
+        else if (!sameBits(first.zb, m.zb))
+        {
+            what = "topography zb";
+        }
+        else if (first.startTime != m.startTime)
+        {
+            what = "start time";
+        }
+        if (!what.empty())
+        {
+            throw std::invalid_argument
+            (
+                "ensemble: member " + std::to_string(k) + " has a different "
+              + what + " from member 0 (members differ only in their"
+                " parameters, initial state and hazard maps)"
+            );
+        }
+    }
+}
+
+template void checkEnsemble(const std::vector<Problem<double>>&);
+template void checkEnsemble(const std::vector<Problem<float>>&);
+
+} // namespace sh
