@@ -30,6 +30,8 @@
 #     at its last time) the remaining momentum is round-off, and its relative
 #     distances are O(1) whatever the backend.  Prints the cell-update
 #     rates.
+#     -ensemble: the ensemble tutorial on both backends, every file under
+#     ensemble/ byte for byte (in float too, unless approximate).
 #
 # Usage
 #     gpuAppCheck.sh <project dir> <work dir>
@@ -228,6 +230,57 @@ prepare granularJet granularJet 256 128 1 0.25 \
     system/fvSolution savageHutter/steadyStateTolerance 0
 compare granularJet double
 compare granularJet single
+
+# -ensemble (issue 15): the ensemble tutorial (12 members: delta x two
+# releases) with -backend cpu and -backend cuda, every file under ensemble/
+# (members, statistics, report.dat) byte for byte, in both precisions
+ens="$work/ensemble/base"
+mkdir -p "$ens"
+cp -r "$project/tutorials/ensemble"/{0.orig,constant,system} "$ens"/
+(
+    cd "$ens" || exit 1
+    setBlockCells 120 56
+    setEntry system/controlDict endTime 12
+    setEntry system/controlDict writeInterval 6
+    runApplication blockMesh
+    restore0Dir
+    runApplication -s small setAvalancheFields -dict system/setAvalancheFieldsDict.small
+    cp 0/h 0/h.small
+    runApplication setAvalancheFields
+    cp 0/h 0/h.large
+) > "$work/ensemble/prepare.log" 2>&1 || { echo "FAIL  ensemble: preparing the case"; status=1; }
+for precision in double single
+do
+    for b in cpu cuda
+    do
+        d="$work/ensemble/$b-$precision"
+        rm -rf "$d"
+        cp -r "$ens" "$d"
+        (cd "$d" && savageHutterFoam -ensemble -backend "$b" -precision "$precision" > log.savageHutterFoam 2>&1) \
+            || { echo "FAIL  ensemble $b $precision: solver failed"; tail -n 20 "$d/log.savageHutterFoam"; status=1; }
+        echo "      ensemble $b $precision: $(grep -m1 'Ensemble of' "$d/log.savageHutterFoam") |" \
+            "$(grep -m1 '^Cell updates' "$d/log.savageHutterFoam")"
+    done
+    cpu="$work/ensemble/cpu-$precision"
+    gpu="$work/ensemble/cuda-$precision"
+    n=0
+    bad=""
+    for f in $(cd "$cpu" && find ensemble -type f ! -name '*.foam' | sort)
+    do
+        n=$((n + 1))
+        cmp -s "$cpu/$f" "$gpu/$f" || bad="$bad $f"
+    done
+    if grep -q approximate "$gpu/log.savageHutterFoam"
+    then
+        echo "SKIP  ensemble $precision: the float kernels are approximate (byte comparison not expected)"
+    elif [ -z "$bad" ] && [ $n -gt 100 ]
+    then
+        echo "PASS  ensemble $precision: cuda = cpu, $n files under ensemble/ identical (12 members, statistics, report.dat)"
+    else
+        echo "FAIL  ensemble $precision: of $n files, these differ:$(echo $bad | cut -c1-300)"
+        status=1
+    fi
+done
 
 echo
 [ $status -eq 0 ] && echo "gpuAppCheck: OK" || echo "gpuAppCheck: FAILED"

@@ -492,6 +492,49 @@ void caseInput::failInclination(const error& e) const
 }
 
 
+wordList caseInput::memberKeywords() const
+{
+    wordList keys({"phi", "epsilon", "lambda"});
+    const word coeffs = friction_->type() + "Coeffs";
+    for (const word& k : friction_->coeffs().sortedToc())
+    {
+        keys.append(coeffs + "/" + k);
+    }
+    return keys;
+}
+
+
+sh::ModelInput caseInput::memberModel
+(
+    const wordList& keys,
+    const scalarList& values
+) const
+{
+    dictionary tp(transportProperties_);
+    forAll(keys, k)
+    {
+        const auto slash = keys[k].find('/');
+        if (slash == std::string::npos)
+        {
+            tp.set(keyType(keys[k]), values[k]);
+        }
+        else
+        {
+            tp.subDict(word(keys[k].substr(0, slash)))
+                .set(keyType(word(keys[k].substr(slash + 1))), values[k]);
+        }
+    }
+    sh::ModelInput m = model;
+    m.epsilon = tp.getOrDefault<scalar>("epsilon", 1);
+    m.lambda = tp.getOrDefault<scalar>("lambda", 1);
+    m.phiDeg = tp.get<scalar>("phi");
+    frictionModel::New(tp)->set(m);
+    // What makeParams refuses (delta > phi, ...), as an InputError
+    sh::makeParams<double>(m);
+    return m;
+}
+
+
 void caseInput::fail(const sh::InputError& e) const
 {
     FatalIOErrorInFunction(dictOf(e.keyword()))

@@ -34,7 +34,11 @@ Description
 
 Usage
     savageHutterFoam [-backend auto|cpu|cuda] [-precision double|single]
-                     [-logInterval seconds] [-parallel]
+                     [-logInterval seconds] [-parallel] [-ensemble]
+
+    -ensemble: the members of system/ensembleDict (design.md section 6)
+    run together, each written under ensemble/member<k>/, the statistics
+    across members under ensemble/statistics/ (ensembleRun.H).
 
     Decomposed (decomposePar with method simple, hierarchical or manual
     into rectangles of the block): mpirun -np N savageHutterFoam -parallel,
@@ -45,6 +49,7 @@ Usage
 #include "fvCFD.H"
 #include "avalancheCase.H"
 #include "avalancheRun.H"
+#include "ensembleRun.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -69,6 +74,11 @@ int main(int argc, char *argv[])
     (
         "logInterval", "seconds",
         "wall time between progress lines (default 5)"
+    );
+    argList::addBoolOption
+    (
+        "ensemble",
+        "run the members of system/ensembleDict together (ensemble/)"
     );
 
     #include "setRootCase.H"
@@ -148,7 +158,18 @@ int main(int argc, char *argv[])
             << " continue exactly" << nl << endl;
     }
 
-    if (precision == "double")
+    if (args.found("ensemble"))
+    {
+        if (precision == "double")
+        {
+            ensembleRun<double>(ac, backend, logInterval).run();
+        }
+        else
+        {
+            ensembleRun<float>(ac, backend, logInterval).run();
+        }
+    }
+    else if (precision == "double")
     {
         avalancheRun<double>(ac, backend, logInterval).run();
     }

@@ -348,9 +348,23 @@ atomicWriter::atomicWriter(Time& runTime)
 }
 
 
+atomicWriter::atomicWriter
+(
+    Time& runTime,
+    const fileName& within,
+    const label purgeWrite
+)
+:
+    runTime_(runTime),
+    purgeWrite_(purgeWrite),
+    within_(within)
+{}
+
+
 void atomicWriter::write()
 {
-    const fileName caseDir = runTime_.path();
+    const fileName caseDir =
+        within_.empty() ? runTime_.path() : runTime_.path()/within_;
     const fileName staging = caseDir/stagingDirName;
     const word name = runTime_.timeName();
     const fileName staged = staging/name;
@@ -363,7 +377,9 @@ void atomicWriter::write()
     // Time writes under path() = rootPath()/caseName()
     fileName& caseName = runTime_.caseName();
     const fileName realCase = caseName;
-    caseName = realCase/stagingDirName;
+    caseName =
+        within_.empty() ? realCase/stagingDirName
+      : realCase/within_/stagingDirName;
     // A stream that fails (disk full) is a FatalIOError inside Time:
     // reported here with what it means for the case
     const std::string why =

@@ -39,6 +39,13 @@ Description
     Every chosen time is checked (hMax, UMax, h, and pMax or rho) before
     anything is written.
 
+    -statistics: instead, the statistics of an ensemble (savageHutterFoam
+    -ensemble, ensemble/statistics/<time>/: hMaxExceedance_<thr>,
+    hMaxMean, hMaxP<p>, UMax..., pMax...) as rasters in
+    postProcessing/hazardMaps/ensemble/<time>/, each pixel the value of its
+    cell, nodata outside the mesh only (a probability of 0 is a value).
+    The latest time of ensemble/statistics, or the one -time names.
+
 Usage
     hazardMaps [-time <ranges> | -latestTime] [-threshold 0.01]
         -time 10,20, -time '10:30' (OpenFOAM's time ranges; a single value
@@ -124,6 +131,12 @@ int main(int argc, char *argv[])
         "threshold", "scalar",
         "hMax [m] above which a cell belongs to the flow (default 0.01)"
     );
+    argList::addBoolOption
+    (
+        "statistics",
+        "rasters of an ensemble's statistics (ensemble/statistics/<time>/)"
+        " instead of a run's hazard maps"
+    );
     argList::noParallel();
     argList::noFunctionObjects();
 
@@ -136,6 +149,38 @@ int main(int argc, char *argv[])
         FatalErrorInFunction
             << "-threshold " << threshold << ": must be finite and >= 0"
             << nl << exit(FatalError);
+    }
+
+    const bool statistics = args.found("statistics");
+    const fileName statsDir = args.path()/"ensemble"/"statistics";
+    word statsTime;
+    if (statistics)
+    {
+        // The statistics' time: the latest, or the one -time names
+        scalar best = -GREAT;
+        const word wanted = args.getOrDefault<word>("time", word::null);
+        scalar wantedValue = 0;
+        const bool numeric = !wanted.empty() && readScalar(wanted, wantedValue);
+        for (const instant& i : TimePaths::findTimes(statsDir))
+        {
+            if
+            (
+                wanted.empty() ? i.value() > best
+              : (i.name() == wanted || (numeric && i.equal(wantedValue)))
+            )
+            {
+                best = i.value();
+                statsTime = i.name();
+            }
+        }
+        if (statsTime.empty())
+        {
+            FatalErrorInFunction
+                << "-statistics: no time directory"
+                << (wanted.empty() ? "" : " " + wanted) << " in " << statsDir
+                << " (written by savageHutterFoam -ensemble)" << nl
+                << "Nothing written." << nl << exit(FatalError);
+        }
     }
 
     // Numeric time directories (times() also lists constant)
@@ -154,7 +199,7 @@ int main(int argc, char *argv[])
             << exit(FatalError);
     }
     instantList chosen;
-    if (args.found("time") || args.found("latestTime"))
+    if (!statistics && (args.found("time") || args.found("latestTime")))
     {
         for
         (
@@ -255,13 +300,13 @@ int main(int argc, char *argv[])
 
     // -- Every chosen time has what the maps need -----------------------------
     const volScalarField h0(fieldIO(mesh, first, "h"), mesh);
-    if (!(gMax(h0.primitiveField()) > 0))
+    if (!statistics && !(gMax(h0.primitiveField()) > 0))
     {
         FatalErrorInFunction
             << "No release: h = 0 at the first time, " << first << nl
             << exit(FatalError);
     }
-    for (const instant& ti : chosen)
+    for (const instant& ti : statistics ? instantList() : chosen)
     {
         const word missing = missingFields(mesh, ti.name(), hasRho);
         if (missing.empty())
@@ -328,6 +373,81 @@ int main(int argc, char *argv[])
                 pixelCell[i + dem.nx*j] = cellOf[ci + nx*cj];
             }
         }
+    }
+
+    if (statistics)
+    {
+        // Every scalar field of the statistics' time but zb
+        const fileName inst = fileName("ensemble")/"statistics"/statsTime;
+        const fileName outDir =
+            runTime.path()/"postProcessing"/"hazardMaps"/"ensemble"/statsTime;
+        wordList names;
+        for (const fileName& f : readDir(statsDir/statsTime, fileName::FILE))
+        {
+            if (f != "zb")
+            {
+                names.append(f);
+            }
+        }
+        Foam::sort(names);
+        if (names.empty())
+        {
+            FatalErrorInFunction
+                << "-statistics: no fields in " << statsDir/statsTime << nl
+                << "Nothing written." << nl << exit(FatalError);
+        }
+        PtrList<volScalarField> fields;
+        for (const word& name : names)
+        {
+            fields.append
+            (
+                new volScalarField
+                (
+                    IOobject
+                    (
+                        name, inst, mesh, IOobject::MUST_READ,
+                        IOobject::NO_WRITE, false
+                    ),
+                    mesh
+                )
+            );
+        }
+        mkDir(outDir);
+        forAll(fields, k)
+        {
+            const scalarField& f = fields[k].primitiveField();
+            terrain::Raster r;
+            r.nx = dem.nx;
+            r.ny = dem.ny;
+            r.gt = dem.gt;
+            r.wkt = dem.wkt;
+            r.hasNodata = true;
+            r.nodata = -9999;
+            r.z.assign(std::size_t(r.nx)*r.ny, r.nodata);
+            forAll(pixelCell, p)
+            {
+                if (pixelCell[p] >= 0)
+                {
+                    r.z[p] = f[pixelCell[p]];
+                }
+            }
+            for (const std::string& ext : terrain::rasterExtensions(dem))
+            {
+                try
+                {
+                    terrain::writeRaster(outDir/(names[k] + ext), r);
+                }
+                catch (const terrain::gdalError& e)
+                {
+                    FatalErrorInFunction
+                        << e.what() << nl << exit(FatalError);
+                }
+            }
+            Info<< "    Wrote " << names[k] << ": range [" << gMin(f) << ", "
+                << gMax(f) << "]" << nl;
+        }
+        Info<< "    Wrote " << outDir << nl << nl << "End\n" << endl;
+        return 0;
     }
 
     for (const instant& ti : chosen)

@@ -1,0 +1,504 @@
+/*---------------------------------------------------------------------------*\
+  savageHutterFoam: Savage-Hutter granular avalanche solver
+\*---------------------------------------------------------------------------*/
+
+#include "ensembleInput.H"
+#include "IOdictionary.H"
+#include "OSspecific.H"
+#include "Tuple2.H"
+#include "DynamicList.H"
+#include "mathematicalConstants.H"
+
+#include <cmath>
+#include <cstdint>
+#include <random>
+
+namespace Foam
+{
+
+namespace
+{
+
+const wordList ensembleKeywords
+({
+    "parameters", "combine", "samples", "seed", "thresholds", "percentiles",
+    "runoutThreshold"
+});
+
+//- Most members an ensemble may have
+const label maxMembers = 100000;
+
+//- A uniform value in [0, 1) from the top 53 bits of one draw
+double unit(std::mt19937_64& rng)
+{
+    return double(rng() >> 11)*(1.0/9007199254740992.0);
+}
+
+//- One parameter as ensembleDict gives it
+struct parameter
+{
+    word name;
+    bool words = false;         //!< release: names of fields
+    word distribution;          //!< uniform, normal, or empty: a list
+    scalarList values;          //!< the list, or (a b) / (mean sd)
+    wordList names;
+};
+
+} // namespace
+
+
+ensembleInput::ensembleInput(const Time& runTime, const caseInput& input)
+:
+    thresholds({0.01, 0.1, 1}),
+    percentiles({5, 50, 95})
+{
+    const fileName path = runTime.path()/runTime.system()/"ensembleDict";
+    if (!isFile(path))
+    {
+        FatalErrorInFunction
+            << "savageHutterFoam -ensemble needs " << path << ", e.g." << nl
+            << "    parameters" << nl << "    {" << nl
+            << "        \"CoulombCoeffs/delta\"  (20 22 24);" << nl
+            << "        hScale                 (0.5 1 2);" << nl
+            << "    }" << nl << "    combine product;   // or list" << nl
+            << "(design.md section 6)" << nl << exit(FatalError);
+    }
+    const IOdictionary dict
+    (
+        IOobject
+        (
+            "ensembleDict", runTime.system(), runTime,
+            IOobject::MUST_READ, IOobject::NO_WRITE, false
+        )
+    );
+    Info<< "Reading ensembleDict" << nl;
+    for (const word& key : dict.toc())
+    {
+        if (!ensembleKeywords.found(key) && key != "FoamFile")
+        {
+            FatalIOErrorInFunction(dict)
+                << "Unknown keyword '" << key << "'." << nl
+                << "Valid keywords: " << flatOutput(ensembleKeywords) << nl
+                << exit(FatalIOError);
+        }
+    }
+    if (!dict.isDict("parameters"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Missing sub-dictionary 'parameters' { <name> <values>; ... }"
+            << nl << exit(FatalIOError);
+    }
+    const dictionary& pd = dict.subDict("parameters");
+    const bool sampled = dict.found("samples");
+    if (sampled && dict.found("combine"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Give either 'samples N; seed S;' (values drawn from ranges)"
+            << " or 'combine product|list;' (values listed), not both" << nl
+            << exit(FatalIOError);
+    }
+    mode = sampled ? word("samples") : dict.getOrDefault<word>("combine", "product");
+    if (!wordList({"product", "list", "samples"}).found(mode) || mode == "samples" && !sampled)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Unknown combine '" << mode << "'." << nl
+            << "Valid choices: (product list)" << nl << exit(FatalIOError);
+    }
+
+    // The parameters, in the order listed
+    const wordList valid = input.memberKeywords();
+    wordList allValid(valid);
+    allValid.append("hScale");
+    allValid.append("release");
+    // The entries in the order listed: a keyword path such as
+    // "CoulombCoeffs/delta" reads as the entry delta of a sub-dictionary
+    // CoulombCoeffs (so does CoulombCoeffs { delta (...); })
+    DynamicList<Tuple2<word, const dictionary*>> entries;
+    for (const word& name : pd.toc())
+    {
+        if (pd.isDict(name))
+        {
+            const dictionary& sub = pd.subDict(name);
+            for (const word& key : sub.toc())
+            {
+                entries.append({name + "/" + key, &sub});
+            }
+        }
+        else
+        {
+            entries.append({name, &pd});
+        }
+    }
+    List<parameter> params;
+    wordList listed;
+    for (const auto& en : entries)
+    {
+        const word& name = en.first();
+        const dictionary& in = *en.second();
+        const word key = name.substr(name.rfind('/') + 1);
+        if (!allValid.found(name) || in.isDict(key))
+        {
+            FatalIOErrorInFunction(in)
+                << "Unknown parameter '" << name << "'." << nl
+                << "Valid parameters: " << flatOutput(allValid)
+                << " (the coefficients of the frictionModel selected in"
+                << " transportProperties)" << nl << exit(FatalIOError);
+        }
+        listed.append(name);
+        parameter p;
+        p.name = name;
+        p.words = name == "release";
+        ITstream& is = in.lookup(key);
+        token first(is);
+        if (first.isWord())
+        {
+            p.distribution = first.wordToken();
+            if (!sampled || p.words)
+            {
+                FatalIOErrorInFunction(in)
+                    << "Parameter '" << name << "': a distribution ("
+                    << p.distribution << ") "
+                    << (p.words
+                        ? "for release: give the fields as a list"
+                        : "needs 'samples N; seed S;' (with combine, list the"
+                          " values)")
+                    << nl << exit(FatalIOError);
+            }
+            if (p.distribution != "uniform" && p.distribution != "normal")
+            {
+                FatalIOErrorInFunction(in)
+                    << "Parameter '" << name << "': unknown distribution '"
+                    << p.distribution << "'." << nl
+                    << "Valid choices: (uniform normal)" << nl
+                    << exit(FatalIOError);
+            }
+            p.values = scalarList(is);
+            const bool uniform = p.distribution == "uniform";
+            if
+            (
+                p.values.size() != 2
+             || !std::isfinite(p.values[0]) || !std::isfinite(p.values[1])
+             || (uniform ? !(p.values[0] <= p.values[1]) : !(p.values[1] >= 0))
+            )
+            {
+                FatalIOErrorInFunction(in)
+                    << "Parameter '" << name << "': " << p.distribution
+                    << " " << p.values << " is not a range." << nl
+                    << "Valid: " << (uniform ? "uniform (a b) with a <= b"
+                        : "normal (mean sd) with sd >= 0") << ", finite"
+                    << nl << exit(FatalIOError);
+            }
+        }
+        else
+        {
+            is.putBack(first);
+            if (p.words)
+            {
+                p.names = wordList(is);
+            }
+            else
+            {
+                p.values = scalarList(is);
+            }
+            const label n = p.words ? p.names.size() : p.values.size();
+            if (n == 0)
+            {
+                FatalIOErrorInFunction(in)
+                    << "Parameter '" << name << "' has no values" << nl
+                    << exit(FatalIOError);
+            }
+            if (sampled && !p.words)
+            {
+                FatalIOErrorInFunction(in)
+                    << "Parameter '" << name << "': with samples, give a"
+                    << " range, uniform (a b) or normal (mean sd)" << nl
+                    << exit(FatalIOError);
+            }
+            for (const scalar v : p.values)
+            {
+                if (!std::isfinite(v))
+                {
+                    FatalIOErrorInFunction(in)
+                        << "Parameter '" << name << "': " << v
+                        << " is not a finite number" << nl
+                        << exit(FatalIOError);
+                }
+            }
+        }
+        if (p.words)
+        {
+            variesRelease = true;
+        }
+        else if (name == "hScale")
+        {
+            variesHScale = true;
+        }
+        else
+        {
+            keys.append(name);
+        }
+        params.append(p);
+    }
+    if (params.empty())
+    {
+        FatalIOErrorInFunction(pd)
+            << "No parameters to vary." << nl
+            << "Valid parameters: " << flatOutput(allValid) << nl
+            << exit(FatalIOError);
+    }
+
+    // The members
+    const auto count = [](const parameter& p)
+    {
+        return p.words ? p.names.size() : p.values.size();
+    };
+    label n = 1;
+    if (sampled)
+    {
+        n = dict.get<label>("samples");
+        if (!dict.found("seed"))
+        {
+            FatalIOErrorInFunction(dict)
+                << "samples needs a seed (an integer), e.g. seed 1;" << nl
+                << exit(FatalIOError);
+        }
+    }
+    else if (mode == "list")
+    {
+        n = count(params[0]);
+        for (const parameter& p : params)
+        {
+            if (count(p) != n)
+            {
+                FatalIOErrorInFunction(dict)
+                    << "combine list: every parameter needs as many values;"
+                    << " '" << params[0].name << "' has " << n << ", '"
+                    << p.name << "' " << count(p) << nl << exit(FatalIOError);
+            }
+        }
+    }
+    else
+    {
+        for (const parameter& p : params)
+        {
+            n *= count(p);
+            if (n > maxMembers)
+            {
+                break;
+            }
+        }
+    }
+    if (n < 1 || n > maxMembers)
+    {
+        FatalIOErrorInFunction(dict)
+            << "The ensemble would have " << n << " members." << nl
+            << "Valid: 1 to " << maxMembers << nl << exit(FatalIOError);
+    }
+
+    std::mt19937_64 rng(sampled ? std::uint64_t(dict.get<label>("seed")) : 0u);
+    members.resize(n);
+    forAll(members, k)
+    {
+        member& m = members[k];
+        m.values.resize(keys.size());
+        label index = k;
+        label stride = n;
+        label key = 0;
+        forAll(params, q)
+        {
+            const parameter& p = params[q];
+            label pick = 0;
+            scalar value = 0;
+            if (sampled)
+            {
+                if (p.words)
+                {
+                    pick = min(label(unit(rng)*p.names.size()), p.names.size() - 1);
+                }
+                else if (p.distribution == "uniform")
+                {
+                    value = p.values[0] + (p.values[1] - p.values[0])*unit(rng);
+                }
+                else
+                {
+                    // Box-Muller: u1 in (0, 1]
+                    const double u1 = 1.0 - unit(rng);
+                    const double u2 = unit(rng);
+                    value = p.values[0] + p.values[1]
+                       *std::sqrt(-2.0*std::log(u1))
+                       *std::cos(2.0*constant::mathematical::pi*u2);
+                }
+            }
+            else
+            {
+                if (mode == "list")
+                {
+                    pick = k;
+                }
+                else
+                {
+                    // The last parameter varying fastest
+                    stride /= count(p);
+                    pick = index/stride;
+                    index -= pick*stride;
+                }
+                if (!p.words)
+                {
+                    value = p.values[pick];
+                }
+            }
+            if (p.words)
+            {
+                m.release = p.names[pick];
+            }
+            else if (p.name == "hScale")
+            {
+                m.hScale = value;
+            }
+            else
+            {
+                m.values[key++] = value;
+            }
+        }
+
+        // Each member as the case is checked
+        if (!(m.hScale > 0 && m.hScale <= 1e6))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Member " << k << " (" << describe(k).c_str() << "): hScale "
+                << m.hScale << " must be positive (at most 1e6)" << nl
+                << exit(FatalIOError);
+        }
+        if
+        (
+            !m.release.empty()
+         && !isFile(runTime.path()/runTime.timeName()/m.release)
+        )
+        {
+            FatalIOErrorInFunction(dict)
+                << "Member " << k << ": release field " << m.release
+                << " not found: " << runTime.path()/runTime.timeName()/m.release
+                << nl << "Valid: the name of a thickness field in the start"
+                << " time directory, e.g. h.release1" << nl << exit(FatalIOError);
+        }
+        std::string why;
+        const bool ioThrows = FatalIOError.throwExceptions();
+        const bool throws = FatalError.throwExceptions();
+        try
+        {
+            input.memberModel(keys, m.values);
+        }
+        catch (const sh::InputError& e)
+        {
+            why = e.what();
+        }
+        catch (const error& e)
+        {
+            why = e.message();
+        }
+        FatalIOError.throwExceptions(ioThrows);
+        FatalError.throwExceptions(throws);
+        if (!why.empty())
+        {
+            FatalIOErrorInFunction(dict)
+                << "Member " << k << " (" << describe(k).c_str() << ") is not a"
+                << " valid case: " << why.c_str() << nl << exit(FatalIOError);
+        }
+    }
+
+    // Statistics and the report
+    thresholds = dict.getOrDefault<scalarList>("thresholds", thresholds);
+    percentiles = dict.getOrDefault<scalarList>("percentiles", percentiles);
+    runoutThreshold =
+        dict.getOrDefault<scalar>("runoutThreshold", runoutThreshold);
+    for (const scalar t : thresholds)
+    {
+        if (!(t > 0 && t < 1e30))
+        {
+            FatalIOErrorInFunction(dict)
+                << "thresholds " << thresholds << ": each a thickness > 0 [m]"
+                << nl << exit(FatalIOError);
+        }
+    }
+    for (const scalar p : percentiles)
+    {
+        if (!(p >= 0 && p <= 100))
+        {
+            FatalIOErrorInFunction(dict)
+                << "percentiles " << percentiles << ": each in [0, 100]" << nl
+                << exit(FatalIOError);
+        }
+    }
+    if (!(runoutThreshold > 0 && runoutThreshold < 1e30))
+    {
+        FatalIOErrorInFunction(dict)
+            << "runoutThreshold " << runoutThreshold << " must be > 0 [m]"
+            << nl << exit(FatalIOError);
+    }
+
+    Info<< "    " << n << " members (" << mode << ") of "
+        << flatOutput(listed) << nl
+        << "    thresholds " << flatOutput(thresholds) << " m, percentiles "
+        << flatOutput(percentiles) << ", runoutThreshold " << runoutThreshold
+        << " m" << nl << endl;
+}
+
+
+word ensembleInput::memberName(const label k)
+{
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "member%04ld", long(k));
+    return buf;
+}
+
+
+dictionary ensembleInput::memberDict(const label k) const
+{
+    const member& m = members[k];
+    dictionary d;
+    d.add("member", k);
+    // A keyword path as the sub-dictionary it names (as transportProperties
+    // and ensembleDict read it): CoulombCoeffs { delta 24; }
+    forAll(keys, q)
+    {
+        const auto slash = keys[q].find('/');
+        if (slash == std::string::npos)
+        {
+            d.add(keys[q], m.values[q]);
+        }
+        else
+        {
+            d.subDictOrAdd(word(keys[q].substr(0, slash)))
+                .add(word(keys[q].substr(slash + 1)), m.values[q]);
+        }
+    }
+    d.add("hScale", m.hScale);
+    if (!m.release.empty())
+    {
+        d.add("release", m.release);
+    }
+    return d;
+}
+
+
+string ensembleInput::describe(const label k) const
+{
+    const member& m = members[k];
+    OStringStream os;
+    os.precision(17);
+    forAll(keys, q)
+    {
+        os << (q ? " " : "") << keys[q] << " " << m.values[q];
+    }
+    if (variesHScale)
+    {
+        os << (keys.size() ? " " : "") << "hScale " << m.hScale;
+    }
+    if (variesRelease)
+    {
+        os << " release " << m.release;
+    }
+    return os.str();
+}
+
+} // End namespace Foam

@@ -1,0 +1,406 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# savageHutterFoam: Savage-Hutter granular avalanche solver
+#
+# Description
+#     savageHutterFoam -ensemble (issue 15) on a small copy of the ensemble
+#     tutorial (the inclined plane of section 5.3 on 60 x 28 cells, t = 2):
+#       - member exactness: two members picked at random (the seed is
+#         printed) run as single cases with their parameters (delta in
+#         transportProperties, their release as 0/h, hScale applied by
+#         the test with exact factors 0.5 and 2): h, hU, hMax, UMax,
+#         tArrival byte for byte the ensemble's ensemble/member<k>/<time>/;
+#       - the statistics against the members counted by hand (a python
+#         check reading every member's hMax and UMax): hMaxExceedance_<thr>
+#         equals the count of members above thr over their number, the
+#         mean and the percentiles (linear between order statistics, the
+#         same formula) exactly;
+#       - a restart: the ensemble run to t = 1, then on to t = 2 with
+#         startFrom latestTime, byte for byte the run straight to 2
+#         (members and statistics);
+#       - samples: the same seed draws the same members, another seed
+#         others; parameters files hold what was drawn, within the ranges;
+#       - a terrain ensemble (terrainChute on 40 m cells): hazardMaps
+#         -statistics writes every statistic as .asc and .tif, each pixel
+#         a value of its field;
+#       - bad ensembleDicts: each exits non-zero with a FOAM FATAL message
+#         naming the problem, no stack trace, and writes nothing (no
+#         ensemble/).
+#     Prints one line per check and "N passed, M failed, K skipped".
+#
+# Usage
+#     ensembleTests.sh <project dir> <work dir>
+#------------------------------------------------------------------------------
+project="$1"
+work="$2"
+. "$project/tests/application/testFunctions.sh"
+
+base="$work/base"
+mkdir "$base"
+cp -r "$project"/tutorials/ensemble/{0.orig,constant,system} "$base"/
+(
+    cd "$base" || exit 1
+    setBlockCells 60 28
+    setEntry system/controlDict endTime 2
+    setEntry system/controlDict writeInterval 1
+    runApplication blockMesh
+    restore0Dir
+    runApplication postProcess -func writeCellCentres -time 0
+    runApplication -s small setAvalancheFields -dict system/setAvalancheFieldsDict.small
+    cp 0/h 0/h.small
+    runApplication setAvalancheFields
+    cp 0/h 0/h.large
+) > "$work/base.log" 2>&1 || { cat "$work/base.log"; fail "setting up the base case (its log above)"; finish; exit 1; }
+
+newCase()
+{
+    rm -rf "$work/$1"
+    cp -r "$base" "$work/$1"
+    rm -f "$work/$1"/log.*
+    echo "$work/$1"
+}
+
+ensembleDict()
+{
+    cat > "$1/system/ensembleDict" <<DICT
+FoamFile { version 2.0; format ascii; class dictionary; object ensembleDict; }
+$2
+DICT
+}
+
+#- The field files of a time directory from internalField on (the header
+#  names the directory)
+same()
+{
+    cmp -s <(sed -n '/^internalField/,$p' "$1") <(sed -n '/^internalField/,$p' "$2")
+}
+
+# The ensemble: delta x release x hScale, 12 members
+product='parameters
+{
+    "CoulombCoeffs/delta" (22 26 30);
+    release (h.large h.small);
+    hScale (0.5 2);
+}
+combine product;
+thresholds (0.01 0.2);
+percentiles (0 25 50 90 100);'
+main="$(newCase main)"
+ensembleDict "$main" "$product"
+(cd "$main" && savageHutterFoam -ensemble -backend cpu > log.ensemble 2>&1)
+rc=$?
+if [ $rc -eq 0 ] && [ -f "$main/ensemble/member0011/2/hMax" ] \
+    && [ -f "$main/ensemble/statistics/2/hMaxExceedance_0.2" ] \
+    && [ -f "$main/ensemble/report.dat" ]
+then
+    pass "-ensemble: 12 members (3 delta x 2 releases x 2 hScale) written at t = 0, 1, 2, statistics and report.dat"
+else
+    tail -n 20 "$main/log.ensemble"
+    fail "-ensemble run (exit $rc; log above)"
+fi
+
+# Member exactness: single runs of two members picked at random
+seed="${SH_TEST_SEED:-$((RANDOM % 1000))}"
+echo "members picked with seed $seed"
+RANDOM=$seed
+first=$((RANDOM % 12))
+picks="$first $(( (first + 1 + RANDOM % 11) % 12 ))"
+for k in $picks
+do
+    m="$(printf 'member%04d' "$k")"
+    par="$main/ensemble/$m/parameters"
+    delta="$(foamDictionary "$par" -entry CoulombCoeffs/delta -value)"
+    release="$(foamDictionary "$par" -entry release -value)"
+    scale="$(foamDictionary "$par" -entry hScale -value)"
+    one="$(newCase "single$k")"
+    (
+        cd "$one" || exit 1
+        rm -f system/ensembleDict
+        setEntry constant/transportProperties CoulombCoeffs/delta "$delta"
+        # 0/h: the release scaled (x 0.5 and x 2 are exact in binary)
+        python3 - "$release" "$scale" <<'PY'
+import re, sys, struct
+rel, s = sys.argv[1], float(sys.argv[2])
+data = open("0/" + rel, "rb").read()
+m = re.search(rb"internalField\s+nonuniform\s+List<scalar>\s*(\d+)\s*\(", data)
+n = int(m.group(1))
+vals = struct.unpack_from("<%dd" % n, data, m.end())
+body = struct.pack("<%dd" % n, *[v * s for v in vals])
+open("0/h", "wb").write(data[:m.end()] + body + data[m.end() + 8 * n:])
+PY
+        savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1
+    )
+    bad=""
+    for f in h hU hMax UMax tArrival
+    do
+        [ -f "$one/2/$f" ] && same "$one/2/$f" "$main/ensemble/$m/2/$f" || bad="$bad $f"
+    done
+    if [ -z "$bad" ]
+    then
+        pass "member $k (delta $delta, $release, hScale $scale): h hU hMax UMax tArrival at t = 2 byte for byte its single run"
+    else
+        fail "member $k (delta $delta, $release, hScale $scale): differs from its single run in:$bad"
+    fi
+done
+
+# The statistics counted by hand
+out="$(/usr/bin/python3 - "$main" <<'PY'
+import math, os, sys
+sys.path.insert(0, os.path.join(os.environ["SAVAGEHUTTER_DIR"], "tutorials", "tools"))
+import foamCase
+import numpy as np
+case = sys.argv[1]
+g = foamCase.Grid(case)
+ens = os.path.join(case, "ensemble")
+members = sorted(d for d in os.listdir(ens) if d.startswith("member"))
+n = len(members)
+stats = os.path.join(ens, "statistics")
+for t in ("1", "2"):
+    h = np.array([foamCase.read_field(os.path.join(ens, m), t, "hMax", g.n) for m in members])
+    u = np.array([foamCase.read_field(os.path.join(ens, m), t, "UMax", g.n) for m in members])
+    bad = []
+    for thr in (0.01, 0.2):
+        want = np.array([sum(1 for k in range(n) if h[k, c] > thr) / n for c in range(g.n)])
+        got = foamCase.read_field(stats, t, "hMaxExceedance_%g" % thr, g.n)
+        if not np.array_equal(want, got):
+            bad.append("hMaxExceedance_%g" % thr)
+    for name, v in (("hMax", h), ("UMax", u)):
+        # summed in member order, as the solver sums
+        mean = np.array([0.0] * g.n)
+        for c in range(g.n):
+            s = 0.0
+            for k in range(n):
+                s += float(v[k, c])
+            mean[c] = s / n
+        if not np.array_equal(mean, foamCase.read_field(stats, t, name + "Mean", g.n)):
+            bad.append(name + "Mean")
+        for p in (0, 25, 50, 90, 100):
+            want = np.zeros(g.n)
+            for c in range(g.n):
+                s = sorted(float(v[k, c]) for k in range(n))
+                r = p / 100 * (n - 1)
+                lo = min(int(math.floor(r)), n - 1)
+                hi = min(lo + 1, n - 1)
+                want[c] = s[lo] + (r - lo) * (s[hi] - s[lo])
+            if not np.array_equal(want, foamCase.read_field(stats, t, "%sP%g" % (name, p), g.n)):
+                bad.append("%sP%g" % (name, p))
+    reached = int(np.sum(foamCase.read_field(stats, t, "hMaxExceedance_0.2", g.n) > 0))
+    if bad:
+        print("FAIL  statistics at t = %s differ from the members counted by hand: %s" % (t, " ".join(bad)))
+    else:
+        print("PASS  statistics at t = %s: hMaxExceedance_0.01/0.2, hMax and UMax mean and P0/25/50/90/100 equal the %d members counted by hand (%d cells reached by 0.2 m)" % (t, n, reached))
+PY
+)"
+tally $? "$out" "statistics by hand"
+
+# Restart: to 1, then on to 2, against the run straight to 2
+re="$(newCase restart)"
+ensembleDict "$re" "$product"
+(
+    cd "$re" || exit 1
+    setEntry system/controlDict endTime 1
+    savageHutterFoam -ensemble -backend cpu > log.first 2>&1 || exit 1
+    setEntry system/controlDict endTime 2
+    savageHutterFoam -ensemble -backend cpu > log.second 2>&1
+)
+rc=$?
+bad=""
+for d in "$main"/ensemble/member* "$main/ensemble/statistics"
+do
+    for f in "$d"/2/*
+    do
+        [ -f "$f" ] || continue
+        cmp -s "$f" "$re/ensemble/$(basename "$d")/2/$(basename "$f")" || bad="$bad $(basename "$d")/$(basename "$f")"
+    done
+done
+cmp -s "$main/ensemble/report.dat" "$re/ensemble/report.dat" || bad="$bad report.dat"
+if [ $rc -eq 0 ] && grep -q "Restart of the ensemble from t = 1" "$re/log.second" && [ -z "$bad" ]
+then
+    pass "restart: to t = 1, then on to 2 (startFrom latestTime): every member's files, the statistics and report.dat byte for byte the run straight to 2"
+else
+    fail "restart (exit $rc): differs in:${bad:- (no restart line?)}"
+fi
+# Another ensemble in ensemble/ is not continued
+other="$(newCase other)"
+cp -r "$re/ensemble" "$other/"
+ensembleDict "$other" "${product/(22 26 30)/(22 26 29)}"
+(cd "$other" && savageHutterFoam -ensemble -backend cpu > log.ensemble 2>&1)
+if [ $? -ne 0 ] && grep -q "holds another ensemble" "$other/log.ensemble"
+then
+    pass "restart with another ensembleDict than ensemble/ holds: refused (remove ensemble/, it says)"
+else
+    fail "restart with another ensembleDict: not refused"
+fi
+
+# Samples: reproducible from the seed
+sampled='parameters
+{
+    "CoulombCoeffs/delta" uniform (20 28);
+    hScale normal (1 0.1);
+    release (h.large h.small);
+}
+samples 5;
+seed 11;'
+params()
+{
+    cat "$1"/ensemble/member*/parameters | grep -v "location\|^ *$"
+}
+for s in a b c
+do
+    d="$(newCase "samples$s")"
+    setEntry "$d/system/controlDict" endTime 0.2
+    setEntry "$d/system/controlDict" writeInterval 0.2
+    if [ $s = c ]
+    then
+        ensembleDict "$d" "${sampled/seed 11/seed 12}"
+    else
+        ensembleDict "$d" "$sampled"
+    fi
+    (cd "$d" && savageHutterFoam -ensemble -backend cpu > log.ensemble 2>&1) || fail "samples$s: run failed"
+done
+deltas="$(for f in "$work"/samplesa/ensemble/member*/parameters; do foamDictionary "$f" -entry CoulombCoeffs/delta -value; done | tr '\n' ' ')"
+inRange=yes
+for v in $deltas
+do
+    awk -v v="$v" 'BEGIN { exit !(v >= 20 && v <= 28) }' || inRange=no
+done
+if [ "$(params "$work/samplesa")" = "$(params "$work/samplesb")" ] \
+    && [ "$(params "$work/samplesa")" != "$(params "$work/samplesc")" ] \
+    && [ $inRange = yes ] && [ -f "$work/samplesa/ensemble/member0004/parameters" ]
+then
+    pass "samples 5, seed 11: the same members twice (delta $deltas), seed 12 others; delta within uniform (20 28)"
+else
+    fail "samples: seed 11 twice gave different members, seed 12 the same, or delta out of range ($deltas)"
+fi
+
+# A terrain case: hazardMaps -statistics writes the statistics as rasters
+ter="$work/terrain"
+cp -r "$project/tutorials/terrainChute" "$ter"
+(
+    cd "$ter" || exit 1
+    rm -f log.*
+    runApplication ./makeTerrain
+    setEntry system/terrainDict cellSize 40
+    runApplication terrainToCase
+    runApplication blockMesh
+    setEntry system/controlDict endTime 20
+    setEntry system/controlDict writeInterval 10
+    setEntry system/fvSolution savageHutter/steadyStateTolerance 0
+    cat > system/ensembleDict <<'DICT'
+FoamFile { version 2.0; format ascii; class dictionary; object ensembleDict; }
+parameters { "CoulombCoeffs/delta" (17 21 25); hScale (0.5 1); }
+thresholds (0.1 1);
+DICT
+    runApplication savageHutterFoam -ensemble -backend cpu
+    runApplication hazardMaps -statistics
+) > "$work/terrain.log" 2>&1
+if [ $? -ne 0 ]
+then
+    tail -n 20 "$work/terrain.log"
+    fail "terrain ensemble: terrainToCase, -ensemble or hazardMaps -statistics failed (log above)"
+else
+    out="$(/usr/bin/python3 - "$ter" <<'PY'
+import bisect, os, sys
+sys.path.insert(0, os.path.join(os.environ["SAVAGEHUTTER_DIR"], "tutorials", "tools"))
+import foamCase
+case = sys.argv[1]
+stats = os.path.join(case, "ensemble", "statistics")
+out = os.path.join(case, "postProcessing", "hazardMaps", "ensemble", "20")
+names = sorted(f for f in os.listdir(os.path.join(stats, "20")) if f not in ("zb", "uniform"))
+want = {"hMaxExceedance_0.1", "hMaxExceedance_1", "hMaxMean", "hMaxP50", "UMaxMean", "pMaxMean", "pMaxP95"}
+bad = sorted(want - set(names))
+checked = 0
+for name in names:
+    path = os.path.join(out, name + ".asc")
+    if not os.path.isfile(path) or not os.path.isfile(os.path.join(out, name + ".tif")):
+        bad.append(name + " (no .asc/.tif)")
+        continue
+    lines = open(path).read().split("\n")
+    head = {}
+    k = 0
+    while lines[k].split() and lines[k].split()[0][0].isalpha():
+        key, val = lines[k].split()[:2]
+        head[key.lower()] = float(val)
+        k += 1
+    nodata = head.get("nodata_value", -9999)
+    vals = [float(v) for l in lines[k:] for v in l.split()]
+    valid = [v for v in vals if v != nodata]
+    field = sorted(foamCase.read_field(stats, "20", name, None).tolist())
+    def near(v):
+        i = bisect.bisect_left(field, v)
+        return any(abs(field[j] - v) <= 1e-6 * max(1.0, abs(v)) for j in (i - 1, i) if 0 <= j < len(field))
+    if not valid or not all(near(v) for v in valid):
+        bad.append(name + " (values not the field's)")
+    if name.startswith("hMaxExceedance") and not all(0 <= v <= 1 for v in valid):
+        bad.append(name + " (outside [0, 1])")
+    checked += 1
+if bad:
+    print("FAIL  hazardMaps -statistics: " + ", ".join(bad))
+else:
+    print("PASS  hazardMaps -statistics on a terrain ensemble (6 members): %d rasters (.asc, .tif) of ensemble/statistics/20, every pixel a value of its field (to the .asc's digits), probabilities in [0, 1]" % checked)
+PY
+)"
+    tally $? "$out" "hazardMaps -statistics"
+fi
+
+# Bad ensembleDicts: rejected, nothing written
+expectRejected()
+{
+    local name="$1" dict="$2"
+    shift 2
+    local d
+    d="$(newCase "bad$name")"
+    ensembleDict "$d" "$dict"
+    (cd "$d" && savageHutterFoam -ensemble -backend cpu > log.ensemble 2>&1)
+    local rc=$? problems="" p
+    [ $rc -ne 0 ] || problems="$problems exit status 0;"
+    grep -q "FOAM FATAL" "$d/log.ensemble" || problems="$problems no FOAM FATAL message;"
+    ! grep -qE "printStack|sigFpe::sigHandler|^#[0-9]+ " "$d/log.ensemble" || problems="$problems a stack trace;"
+    [ ! -e "$d/ensemble" ] || problems="$problems ensemble/ written;"
+    for p in "$@"
+    do
+        grep -qF -- "$p" "$d/log.ensemble" || problems="$problems no '$p';"
+    done
+    if [ -z "$problems" ]
+    then
+        pass "$name: rejected ($(grep -m1 -A1 'FOAM FATAL' "$d/log.ensemble" | tail -n1 | cut -c1-100))"
+    else
+        fail "$name:$problems"
+    fi
+}
+expectRejected unknownParameter 'parameters { "CoulombCoeffs/deltaa" (20 22); }' \
+    "Unknown parameter 'CoulombCoeffs/deltaa'" "CoulombCoeffs/delta" "ensembleDict"
+expectRejected otherLawsCoefficient 'parameters { "VoellmyCoeffs/mu" (0.2 0.3); }' \
+    "Unknown parameter 'VoellmyCoeffs/mu'"
+expectRejected deltaAbovePhi 'parameters { "CoulombCoeffs/delta" (20 35); }' \
+    "Member 1" "not a valid case" "delta"
+expectRejected badUniform 'parameters { "CoulombCoeffs/delta" uniform (28 20); } samples 4; seed 1;' \
+    "uniform" "a <= b"
+expectRejected badNormal 'parameters { hScale normal (1 -0.1); } samples 4; seed 1;' \
+    "normal" "sd >= 0"
+expectRejected noSeed 'parameters { hScale normal (1 0.1); } samples 4;' "seed"
+expectRejected listLengths 'parameters { "CoulombCoeffs/delta" (20 22); hScale (1 2 3); } combine list;' \
+    "combine list" "as many values"
+expectRejected unknownCombine 'parameters { hScale (1 2); } combine cartesian;' \
+    "Unknown combine 'cartesian'" "product list"
+expectRejected negativeScale 'parameters { hScale (1 -2); }' "hScale" "positive"
+expectRejected missingRelease 'parameters { release (h.large h.medium); }' \
+    "h.medium" "not found"
+expectRejected noParameters 'parameters { }' "No parameters"
+expectRejected unknownKeyword 'parameters { hScale (1 2); } sample 4;' \
+    "Unknown keyword 'sample'" "samples"
+expectRejected distributionWithCombine 'parameters { hScale uniform (1 2); }' \
+    "needs 'samples N; seed S;'"
+expectRejected badThreshold 'parameters { hScale (1 2); } thresholds (0.1 -1);' "thresholds"
+rm -f "$base/system/ensembleDict.x"
+noDict="$(newCase noDict)"
+rm -f "$noDict/system/ensembleDict"
+(cd "$noDict" && savageHutterFoam -ensemble -backend cpu > log.ensemble 2>&1)
+if [ $? -ne 0 ] && grep -q "needs.*ensembleDict" "$noDict/log.ensemble" && [ ! -e "$noDict/ensemble" ]
+then
+    pass "no system/ensembleDict: rejected with an example, nothing written"
+else
+    fail "no system/ensembleDict: not rejected as it should be"
+fi
+
+finish
