@@ -90,10 +90,15 @@ std::string compareMember
     (
         d.volume != d1.volume || d.wetCells != d1.wetCells
      || d.movingCells != d1.movingCells || d.maxRate != d1.maxRate
-     || d.hMax != d1.hMax || d.speedClips != d1.speedClips
+     || d.hMax != d1.hMax
     )
     {
         bad += " diagnostics";
+    }
+    if (d.speedClips != d1.speedClips)
+    {
+        bad += " speed clips (" + std::to_string(d.speedClips) + "/"
+          + std::to_string(d1.speedClips) + ")";
     }
     return bad;
 }
