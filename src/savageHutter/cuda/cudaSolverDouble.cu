@@ -3,14 +3,15 @@
 
 Description
     The CUDA backend in double precision (kernels and driver in
-    cudaSolverImpl.H), cudaAvailable() and cudaMemoryInfo().
+    cudaSolverImpl.H, the ensembles' driver in cudaEnsembleImpl.H),
+    cudaAvailable() and cudaMemoryInfo().
 
     Compiled with IEEE correctly rounded division and square root (nvcc's
     default) and --fmad=false (CMakeLists.txt), like the CPU backend, so
     that the two give bit-identical states (tests/gpuCompare.C).
 \*---------------------------------------------------------------------------*/
 
-#include "cudaSolverImpl.H"
+#include "cudaEnsembleImpl.H"
 
 namespace sh
 {
@@ -120,6 +121,10 @@ bool cudaAvailable(std::string* why)
 template std::unique_ptr<Solver<double>> makeCudaSolver
 (
     const Problem<double>&, Halo<double>*
+);
+template std::unique_ptr<EnsembleSolver<double>> makeCudaEnsemble
+(
+    const std::vector<Problem<double>>&
 );
 
 } // namespace sh

@@ -3,7 +3,8 @@
 
 Description
     The CUDA backend in single precision (kernels and driver in
-    cudaSolverImpl.H, the same code as in double).
+    cudaSolverImpl.H, the ensembles' driver in cudaEnsembleImpl.H, the
+    same code as in double).
 
     Compiled apart from double so that it can take other flags without
     changing a bit of the double backend.  By default it is IEEE-rounded
@@ -18,7 +19,7 @@ Description
     approximate build gains little (docs/performance.md).
 \*---------------------------------------------------------------------------*/
 
-#include "cudaSolverImpl.H"
+#include "cudaEnsembleImpl.H"
 
 namespace sh
 {
@@ -35,6 +36,10 @@ bool cudaFloatApproximate()
 template std::unique_ptr<Solver<float>> makeCudaSolver
 (
     const Problem<float>&, Halo<float>*
+);
+template std::unique_ptr<EnsembleSolver<float>> makeCudaEnsemble
+(
+    const std::vector<Problem<float>>&
 );
 
 } // namespace sh

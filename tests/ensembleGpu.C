@@ -1,0 +1,298 @@
+/*---------------------------------------------------------------------------*\
+  Ensembles on the CUDA backend (cuda/cudaEnsembleImpl.H, issue 15)
+
+    Members of tests/ensembleCases.H (the section 5.3 inclined plane with
+    delta, phi, the friction law and its coefficients and the initial
+    thickness varied), advanced together in the same kernels to t = 1.5,
+    6 and 12 (the second leg first stopped by a spent wall budget, after
+    one graph of steps, then continued; the last advance repeated, which
+    must change nothing), against single runs of each member's problem
+    advanced to the same end times: h, hu, hv, hMax, speed, pressure,
+    arrival, the time, steps and last dt and the diagnostics, bit for bit
+    (memcmp), at every end time.  Double against CpuSolver, float against
+    single CUDA runs (makeCudaSolver: the same kernels, so bit for bit
+    also in a build with SH_CUDA_FLOAT_APPROX=ON).  Members compared:
+    the first, the last, a Voellmy one (3), a Pouliquen-Forterre one (5)
+    and others picked at random (the seed is printed; give it as the
+    first argument to repeat a run).  Ensembles: 23 members on 30 x 14
+    cells; 7 members on 60 x 28 launched 3 members at a time (the chunks
+    of an ensemble of more than 65535 members: SH_ENSEMBLE_CHUNK); the
+    sum of the wet cell updates over all members against the singles'
+    where all are run.  Refused: members with another grid
+    (std::invalid_argument, as the CPU backend).
+
+    Without a usable GPU (no CUDA in the build, no device) the test
+    prints why and exits with 77, which CTest reports as skipped.
+\*---------------------------------------------------------------------------*/
+
+#include "cpu/cpuSolver.H"
+#include "cuda/cudaSolver.H"
+#include "ensemble/ensembleSolver.H"
+#include "ensembleCases.H"
+#include "testing.H"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <random>
+#include <stdexcept>
+#include <string>
+
+using namespace sh;
+using shtest::Counter;
+
+namespace
+{
+
+template<class T>
+bool same(const std::vector<T>& a, const std::vector<T>& b)
+{
+    return a.size() == b.size()
+        && (a.empty() || std::memcmp(a.data(), b.data(), a.size()*sizeof(T)) == 0);
+}
+
+//- Member m of the ensemble against its single run; "" when bit for bit
+template<class Real>
+std::string compareMember
+(
+    EnsembleSolver<Real>& e,
+    int m,
+    Solver<Real>& single
+)
+{
+    std::vector<Real> h, hu, hv, h1, hu1, hv1;
+    e.getState(m, h, hu, hv);
+    single.getState(h1, hu1, hv1);
+    const PeakMaps<Real> p = e.peakMaps(m);
+    const PeakMaps<Real> p1 = single.peakMaps();
+    std::string bad;
+    if (!same(h, h1) || !same(hu, hu1) || !same(hv, hv1)) { bad += " state"; }
+    if (!same(p.h, p1.h)) { bad += " hMax"; }
+    if (!same(p.speed, p1.speed)) { bad += " speed"; }
+    if (!same(p.pressure, p1.pressure)) { bad += " pressure"; }
+    if (!same(p.arrival, p1.arrival)) { bad += " arrival"; }
+    if
+    (
+        e.time(m) != single.time() || e.steps(m) != single.steps()
+     || e.lastDt(m) != single.lastDt()
+    )
+    {
+        bad += " clock (t " + std::to_string(e.time(m)) + "/"
+          + std::to_string(single.time()) + ", steps "
+          + std::to_string(e.steps(m)) + "/" + std::to_string(single.steps())
+          + ")";
+    }
+    const Diagnostics d = e.diagnostics(m);
+    const Diagnostics d1 = single.diagnostics();
+    if
+    (
+        d.volume != d1.volume || d.wetCells != d1.wetCells
+     || d.movingCells != d1.movingCells || d.maxRate != d1.maxRate
+     || d.hMax != d1.hMax
+    )
+    {
+        bad += " diagnostics";
+    }
+    if (d.speedClips != d1.speedClips)
+    {
+        bad += " speed clips (" + std::to_string(d.speedClips) + "/"
+          + std::to_string(d1.speedClips) + ")";
+    }
+    return bad;
+}
+
+//- The single run a member is compared with: CpuSolver in double, a
+//  single CUDA run in float
+std::unique_ptr<Solver<double>> singleRun(const Problem<double>& pb)
+{
+    return std::unique_ptr<Solver<double>>(new CpuSolver<double>(pb, true));
+}
+
+std::unique_ptr<Solver<float>> singleRun(const Problem<float>& pb)
+{
+    return makeCudaSolver(pb);
+}
+
+template<class Real>
+void exactness(Counter& t, int k, int nMembers, int chunk, unsigned seed)
+{
+    const char* prec = sizeof(Real) == 8 ? "double" : "float";
+    const char* against = sizeof(Real) == 8 ? "CpuSolver" : "single CUDA runs";
+    if (chunk > 0)
+    {
+        setenv("SH_ENSEMBLE_CHUNK", std::to_string(chunk).c_str(), 1);
+    }
+    else
+    {
+        unsetenv("SH_ENSEMBLE_CHUNK");
+    }
+    const std::vector<Problem<Real>> members =
+        shcases::inclinedPlaneMembers<Real>(k, nMembers);
+    std::unique_ptr<EnsembleSolver<Real>> e = makeCudaEnsemble(members);
+    unsetenv("SH_ENSEMBLE_CHUNK");
+
+    // The first and the last, a Voellmy and a Pouliquen-Forterre member
+    // (ensembleCases.H), then random ones
+    std::mt19937 rng(seed);
+    std::vector<int> picks;
+    for (int m : {0, nMembers - 1, 3, 5})
+    {
+        if (m < nMembers && std::find(picks.begin(), picks.end(), m) == picks.end())
+        {
+            picks.push_back(m);
+        }
+    }
+    std::uniform_int_distribution<int> pick(0, nMembers - 1);
+    while (int(picks.size()) < std::min(nMembers, 8))
+    {
+        const int m = pick(rng);
+        if (std::find(picks.begin(), picks.end(), m) == picks.end())
+        {
+            picks.push_back(m);
+        }
+    }
+    const bool everyMember = int(picks.size()) == nMembers;
+    std::printf
+    (
+        "\n  %s, %d members on %d x %d cells (%s), against %s; members"
+        " compared:",
+        prec, nMembers, members[0].grid.nx, members[0].grid.ny,
+        e->name().c_str(), against
+    );
+    std::vector<std::unique_ptr<Solver<Real>>> singles;
+    for (int m : picks)
+    {
+        std::printf(" %d", m);
+        singles.push_back(singleRun(members[m]));
+    }
+    std::printf("\n");
+
+    // Each end time: the ensemble, then the singles, then the comparison
+    const double ends[] = {1.5, 6, 12};
+    std::string bad;
+    bool early = false;
+    bool reached = true;
+    for (int leg = 0; leg < 3; ++leg)
+    {
+        const double tEnd = ends[leg];
+        if (leg == 1)
+        {
+            // A spent wall budget: one graph of steps, then on
+            early = e->advance(tEnd, 0.0);
+            int behind = 0;
+            for (int m = 0; m < nMembers; ++m)
+            {
+                behind += e->time(m) < tEnd;
+            }
+            std::printf
+            (
+                "    to t = %g with a wall budget of 0 s: %s, %d of %d"
+                " members short of it\n",
+                tEnd, early ? "reached" : "stopped early", behind, nMembers
+            );
+        }
+        reached = e->advance(tEnd, 1e300) && reached;
+        if (leg == 2)
+        {
+            // Again to the same end: nothing to do
+            reached = e->advance(tEnd, 1e300) && reached;
+        }
+        long steps = 0;
+        long lo = -1;
+        long hi = 0;
+        for (std::size_t s = 0; s < picks.size(); ++s)
+        {
+            singles[s]->advance(tEnd, 1e300);
+            steps += singles[s]->steps();
+            const std::string b = compareMember(*e, picks[s], *singles[s]);
+            if (!b.empty())
+            {
+                bad += " t = " + std::to_string(tEnd) + " member "
+                  + std::to_string(picks[s]) + ":" + b + ";";
+            }
+        }
+        for (int m = 0; m < nMembers; ++m)
+        {
+            lo = lo < 0 ? e->steps(m) : std::min(lo, e->steps(m));
+            hi = std::max(hi, e->steps(m));
+        }
+        std::printf
+        (
+            "    t = %g: compared (%ld steps of theirs; every member's steps"
+            " %ld .. %ld)\n", tEnd, steps, lo, hi
+        );
+    }
+    if (everyMember)
+    {
+        long long wet = 0;
+        for (auto& s : singles)
+        {
+            wet += s->wetCellUpdates();
+        }
+        if (wet != e->wetCellUpdates())
+        {
+            bad += " wet cell updates " + std::to_string(e->wetCellUpdates())
+              + " against " + std::to_string(wet) + ";";
+        }
+    }
+    t.check
+    (
+        !early && reached && bad.empty(),
+        std::string(prec) + ", " + std::to_string(nMembers) + " members on "
+      + std::to_string(members[0].grid.nx) + " x "
+      + std::to_string(members[0].grid.ny)
+      + (chunk > 0 ? ", " + std::to_string(chunk) + " per launch" : "")
+      + ": each member bit for bit its single run at t = 1.5, 6, 12 (after"
+        " a stop by the wall budget)"
+      + (everyMember ? ", wet cell updates summed" : "")
+      + (bad.empty() ? "" : " -" + bad)
+    );
+}
+
+void refusal(Counter& t)
+{
+    std::vector<Problem<double>> ms = shcases::inclinedPlaneMembers<double>(1, 3);
+    ms[2] = shcases::inclinedPlaneMember<double>(2, 2);
+    bool refused = false;
+    try
+    {
+        makeCudaEnsemble(ms);
+    }
+    catch (const std::invalid_argument& e)
+    {
+        std::printf("    refused: %s\n", e.what());
+        refused = true;
+    }
+    t.check(refused, "members with another grid refused");
+}
+
+} // namespace
+
+
+int main(int argc, char* argv[])
+{
+    std::string why;
+    if (!cudaAvailable(&why))
+    {
+        std::printf("ensembleGpu: SKIPPED: %s\n", why.c_str());
+        return 77;
+    }
+    const unsigned seed = argc > 1
+        ? unsigned(std::stoul(argv[1]))
+        : unsigned(std::chrono::system_clock::now().time_since_epoch().count() % 100000);
+    std::printf
+    (
+        "Ensembles on the CUDA backend (%s); members picked with seed %u\n",
+        cudaDeviceDescription().c_str(), seed
+    );
+    Counter t;
+    exactness<double>(t, 1, 23, 0, seed);
+    exactness<double>(t, 2, 7, 3, seed + 1);
+    exactness<double>(t, 1, 1, 0, seed + 2);
+    exactness<float>(t, 1, 23, 0, seed + 3);
+    exactness<float>(t, 2, 7, 3, seed + 4);
+    refusal(t);
+    return t.finish();
+}
