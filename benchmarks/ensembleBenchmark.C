@@ -43,6 +43,7 @@ Description
 #include "cuda/cudaSolver.H"
 #include "ensemble/ensembleSolver.H"
 #include "ensembleCases.H"
+#include "ensembleCompare.H"
 
 #include <algorithm>
 #include <chrono>
@@ -77,27 +78,11 @@ struct Options
     std::string out;
 };
 
-template<class T>
-bool same(const std::vector<T>& a, const std::vector<T>& b)
-{
-    return a.size() == b.size()
-        && (a.empty() || std::memcmp(a.data(), b.data(), a.size()*sizeof(T)) == 0);
-}
-
-//- Member m of the ensemble bit for bit its single run
+//- Whether member m is bit for bit its single run (tests/ensembleCompare.H)
 template<class Real>
 bool sameRun(EnsembleSolver<Real>& e, int m, Solver<Real>& s)
 {
-    std::vector<Real> h, hu, hv, h1, hu1, hv1;
-    e.getState(m, h, hu, hv);
-    s.getState(h1, hu1, hv1);
-    const PeakMaps<Real> p = e.peakMaps(m);
-    const PeakMaps<Real> p1 = s.peakMaps();
-    return same(h, h1) && same(hu, hu1) && same(hv, hv1)
-        && same(p.h, p1.h) && same(p.speed, p1.speed)
-        && same(p.pressure, p1.pressure) && same(p.arrival, p1.arrival)
-        && e.time(m) == s.time() && e.steps(m) == s.steps()
-        && e.lastDt(m) == s.lastDt();
+    return shtest::compareMember(e, m, s).empty();
 }
 
 template<class Real>

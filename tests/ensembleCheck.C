@@ -7,7 +7,8 @@
     leg first stopped by a spent wall budget, then continued), against
     single runs of each member's problem advanced to the same end times
     (CpuSolver): h, hu, hv, hMax, speed, pressure, arrival, the time,
-    steps and last dt, bit for bit (memcmp).  Members are picked at random
+    steps and last dt, the diagnostics and speed clips, bit for bit
+    (tests/ensembleCompare.H).  Members are picked at random
     (the seed is printed), always with the first and the last; both ways
     the CPU backend runs (OpenMP over members when there are at least as
     many members as threads; else member after member), double and float.
@@ -19,6 +20,7 @@
 #include "cpu/cpuSolver.H"
 #include "ensemble/ensembleSolver.H"
 #include "ensembleCases.H"
+#include "ensembleCompare.H"
 #include "testing.H"
 
 #ifdef _OPENMP
@@ -35,47 +37,11 @@
 
 using namespace sh;
 using shtest::Counter;
+using shtest::compareMember;
 
 namespace
 {
 
-template<class T>
-bool same(const std::vector<T>& a, const std::vector<T>& b)
-{
-    return a.size() == b.size()
-        && (a.empty() || std::memcmp(a.data(), b.data(), a.size()*sizeof(T)) == 0);
-}
-
-//- Member m of the ensemble against its single run; "" when bit for bit
-template<class Real>
-std::string compareMember
-(
-    EnsembleSolver<Real>& e,
-    int m,
-    Solver<Real>& single
-)
-{
-    std::vector<Real> h, hu, hv, h1, hu1, hv1;
-    e.getState(m, h, hu, hv);
-    single.getState(h1, hu1, hv1);
-    const PeakMaps<Real> p = e.peakMaps(m);
-    const PeakMaps<Real> p1 = single.peakMaps();
-    std::string bad;
-    if (!same(h, h1) || !same(hu, hu1) || !same(hv, hv1)) { bad += " state"; }
-    if (!same(p.h, p1.h)) { bad += " hMax"; }
-    if (!same(p.speed, p1.speed)) { bad += " speed"; }
-    if (!same(p.pressure, p1.pressure)) { bad += " pressure"; }
-    if (!same(p.arrival, p1.arrival)) { bad += " arrival"; }
-    if
-    (
-        e.time(m) != single.time() || e.steps(m) != single.steps()
-     || e.lastDt(m) != single.lastDt()
-    )
-    {
-        bad += " clock";
-    }
-    return bad;
-}
 
 template<class Real>
 void exactness(Counter& t, int nMembers, int threads, unsigned seed)

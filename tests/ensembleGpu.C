@@ -29,6 +29,7 @@
 #include "cpu/cpuSolver.H"
 #include "cuda/cudaSolver.H"
 #include "ensemble/ensembleSolver.H"
+#include "ensembleCompare.H"
 #include "ensembleCases.H"
 #include "testing.H"
 
@@ -43,66 +44,11 @@
 
 using namespace sh;
 using shtest::Counter;
+using shtest::compareMember;
 
 namespace
 {
 
-template<class T>
-bool same(const std::vector<T>& a, const std::vector<T>& b)
-{
-    return a.size() == b.size()
-        && (a.empty() || std::memcmp(a.data(), b.data(), a.size()*sizeof(T)) == 0);
-}
-
-//- Member m of the ensemble against its single run; "" when bit for bit
-template<class Real>
-std::string compareMember
-(
-    EnsembleSolver<Real>& e,
-    int m,
-    Solver<Real>& single
-)
-{
-    std::vector<Real> h, hu, hv, h1, hu1, hv1;
-    e.getState(m, h, hu, hv);
-    single.getState(h1, hu1, hv1);
-    const PeakMaps<Real> p = e.peakMaps(m);
-    const PeakMaps<Real> p1 = single.peakMaps();
-    std::string bad;
-    if (!same(h, h1) || !same(hu, hu1) || !same(hv, hv1)) { bad += " state"; }
-    if (!same(p.h, p1.h)) { bad += " hMax"; }
-    if (!same(p.speed, p1.speed)) { bad += " speed"; }
-    if (!same(p.pressure, p1.pressure)) { bad += " pressure"; }
-    if (!same(p.arrival, p1.arrival)) { bad += " arrival"; }
-    if
-    (
-        e.time(m) != single.time() || e.steps(m) != single.steps()
-     || e.lastDt(m) != single.lastDt()
-    )
-    {
-        bad += " clock (t " + std::to_string(e.time(m)) + "/"
-          + std::to_string(single.time()) + ", steps "
-          + std::to_string(e.steps(m)) + "/" + std::to_string(single.steps())
-          + ")";
-    }
-    const Diagnostics d = e.diagnostics(m);
-    const Diagnostics d1 = single.diagnostics();
-    if
-    (
-        d.volume != d1.volume || d.wetCells != d1.wetCells
-     || d.movingCells != d1.movingCells || d.maxRate != d1.maxRate
-     || d.hMax != d1.hMax
-    )
-    {
-        bad += " diagnostics";
-    }
-    if (d.speedClips != d1.speedClips)
-    {
-        bad += " speed clips (" + std::to_string(d.speedClips) + "/"
-          + std::to_string(d1.speedClips) + ")";
-    }
-    return bad;
-}
 
 //- The single run a member is compared with: CpuSolver in double, a
 //  single CUDA run in float

@@ -114,6 +114,48 @@ word missingFields(const fvMesh& mesh, const word& t, const bool hasRho)
     return missing;
 }
 
+//- A raster on the DEM's grid from the value of each pixel's cell where
+//  `keep` says so, nodata (-9999) elsewhere, written as .asc and .tif (a
+//  rotated DEM's grid as GeoTIFF alone: ESRI ASCII is north-up)
+template<class Keep>
+void writeMap
+(
+    const fileName& base,
+    const terrain::Raster& dem,
+    const labelList& pixelCell,
+    const scalarField& f,
+    const Keep& keep
+)
+{
+    terrain::Raster r;
+    r.nx = dem.nx;
+    r.ny = dem.ny;
+    r.gt = dem.gt;
+    r.wkt = dem.wkt;
+    r.hasNodata = true;
+    r.nodata = -9999;
+    r.z.assign(std::size_t(r.nx)*r.ny, r.nodata);
+    forAll(pixelCell, p)
+    {
+        const label c = pixelCell[p];
+        if (c >= 0 && keep(c))
+        {
+            r.z[p] = f[c];
+        }
+    }
+    for (const std::string& ext : terrain::rasterExtensions(dem))
+    {
+        try
+        {
+            terrain::writeRaster(base + ext, r);
+        }
+        catch (const terrain::gdalError& e)
+        {
+            FatalErrorInFunction << e.what() << nl << exit(FatalError);
+        }
+    }
+}
+
 } // namespace
 
 
@@ -416,33 +458,11 @@ int main(int argc, char *argv[])
         forAll(fields, k)
         {
             const scalarField& f = fields[k].primitiveField();
-            terrain::Raster r;
-            r.nx = dem.nx;
-            r.ny = dem.ny;
-            r.gt = dem.gt;
-            r.wkt = dem.wkt;
-            r.hasNodata = true;
-            r.nodata = -9999;
-            r.z.assign(std::size_t(r.nx)*r.ny, r.nodata);
-            forAll(pixelCell, p)
-            {
-                if (pixelCell[p] >= 0)
-                {
-                    r.z[p] = f[pixelCell[p]];
-                }
-            }
-            for (const std::string& ext : terrain::rasterExtensions(dem))
-            {
-                try
-                {
-                    terrain::writeRaster(outDir/(names[k] + ext), r);
-                }
-                catch (const terrain::gdalError& e)
-                {
-                    FatalErrorInFunction
-                        << e.what() << nl << exit(FatalError);
-                }
-            }
+            writeMap
+            (
+                outDir/names[k], dem, pixelCell, f,
+                [](const label) { return true; }
+            );
             Info<< "    Wrote " << names[k] << ": range [" << gMin(f) << ", "
                 << gMax(f) << "]" << nl;
         }
@@ -505,37 +525,14 @@ int main(int argc, char *argv[])
             const scalarField& f = maps[name];
             // -1 in tArrival: never arrived
             const bool arrival = name == "tArrival";
-            terrain::Raster r;
-            r.nx = dem.nx;
-            r.ny = dem.ny;
-            r.gt = dem.gt;
-            r.wkt = dem.wkt;
-            r.hasNodata = true;
-            r.nodata = -9999;
-            r.z.assign(std::size_t(r.nx)*r.ny, r.nodata);
-            forAll(pixelCell, p)
-            {
-                const label c = pixelCell[p];
-                if (c >= 0 && hMax[c] > threshold && !(arrival && f[c] < 0))
+            writeMap
+            (
+                outDir/name, dem, pixelCell, f,
+                [&](const label c)
                 {
-                    r.z[p] = f[c];
+                    return hMax[c] > threshold && !(arrival && f[c] < 0);
                 }
-            }
-            // A rotated DEM's grid as GeoTIFF alone (ESRI ASCII is
-            // north-up)
-            for (const std::string& ext : terrain::rasterExtensions(dem))
-            {
-                const fileName file = outDir/(name + ext);
-                try
-                {
-                    terrain::writeRaster(file, r);
-                }
-                catch (const terrain::gdalError& e)
-                {
-                    FatalErrorInFunction
-                        << e.what() << nl << exit(FatalError);
-                }
-            }
+            );
             Info<< "    Wrote " << name << " ("
                 << (dem.northUp() ? ".asc, .tif" : ".tif") << "): range ["
                 << gMin(f) << ", " << gMax(f) << "]" << nl;
