@@ -20,6 +20,8 @@
 #         (members and statistics);
 #       - samples: the same seed draws the same members, another seed
 #         others; parameters files hold what was drawn, within the ranges;
+#       - foamToVTK -case ensemble/statistics and -case ensemble/member<k>
+#         (they are cases by links to constant/ and system/);
 #       - a terrain ensemble (terrainChute on 40 m cells): hazardMaps
 #         -statistics writes every statistic as .asc and .tif, each pixel
 #         a value of its field;
@@ -97,6 +99,24 @@ then
 else
     tail -n 20 "$main/log.ensemble"
     fail "-ensemble run (exit $rc; log above)"
+fi
+
+# The statistics and a member open as cases (links to constant/, system/)
+if command -v foamToVTK > /dev/null
+then
+    (cd "$main" && foamToVTK -case ensemble/statistics > log.foamToVTK.statistics 2>&1 \
+        && foamToVTK -case ensemble/member0003 -latestTime > log.foamToVTK.member 2>&1)
+    if [ $? -eq 0 ] \
+        && grep -q "volScalar.*hMaxExceedance_0.2.*hMaxMean" "$main/log.foamToVTK.statistics" \
+        && [ -f "$main/ensemble/statistics/VTK/statistics.vtm.series" ] \
+        && grep -q "volScalar.*hMax" "$main/log.foamToVTK.member"
+    then
+        pass "foamToVTK -case ensemble/statistics (3 times, the statistics' fields) and -case ensemble/member0003"
+    else
+        fail "foamToVTK on ensemble/statistics or a member failed (logs in $main)"
+    fi
+else
+    skip "foamToVTK on the ensemble: no foamToVTK here"
 fi
 
 # Member exactness: single runs of two members picked at random
