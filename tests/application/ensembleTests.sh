@@ -17,7 +17,11 @@
 #         same formula) exactly;
 #       - a restart: the ensemble run to t = 1, then on to t = 2 with
 #         startFrom latestTime, byte for byte the run straight to 2
-#         (members and statistics);
+#         (members and statistics); an ensemble/ of other or more members
+#         refused under latestTime and kept, replaced by startFrom
+#         startTime;
+#       - the members' order in a product (the last parameter fastest, two
+#         coefficients of one law with another between them);
 #       - samples: the same seed draws the same members, another seed
 #         others; parameters files hold what was drawn, within the ranges;
 #       - foamToVTK -case ensemble/statistics and -case ensemble/member<k>
@@ -252,6 +256,69 @@ else
     fail "restart with another ensembleDict: not refused"
 fi
 
+# More members than ensemble/ holds: refused under latestTime, replaced
+# (with a warning) by a fresh start, which a restart then continues
+more="$(newCase more)"
+cp -r "$re/ensemble" "$more/"
+ensembleDict "$more" "${product/(22 26 30)/(22 26 30 24)}"
+setEntry "$more/system/controlDict" endTime 1
+(cd "$more" && savageHutterFoam -ensemble -backend cpu > log.latest 2>&1)
+rcLatest=$?
+[ -d "$more/ensemble/member0003/2" ] && kept=yes || kept=no
+setEntry "$more/system/controlDict" startFrom startTime
+(cd "$more" && savageHutterFoam -ensemble -backend cpu > log.fresh 2>&1)
+rcFresh=$?
+setEntry "$more/system/controlDict" startFrom latestTime
+setEntry "$more/system/controlDict" endTime 2
+(cd "$more" && savageHutterFoam -ensemble -backend cpu > log.again 2>&1)
+rcAgain=$?
+if [ $rcLatest -ne 0 ] && grep -q "holds another ensemble" "$more/log.latest" && [ $kept = yes ] \
+    && [ $rcFresh -eq 0 ] && grep -q "Replacing" "$more/log.fresh" \
+    && [ $rcAgain -eq 0 ] && grep -q "Restart of the ensemble from t = 1" "$more/log.again" \
+    && [ -f "$more/ensemble/member0015/2/h" ] \
+    && [ "$(foamDictionary "$more/ensemble/member0012/parameters" -entry CoulombCoeffs/delta -value)" = 24 ]
+then
+    pass "16 members over an ensemble/ of 12: refused under latestTime (kept), replaced by startFrom startTime (warned), then continued from t = 1 by latestTime"
+else
+    fail "16 members over 12: latestTime exit $rcLatest (kept: $kept), fresh start exit $rcFresh, restart exit $rcAgain"
+fi
+
+# The members' order: product nests the parameters as listed, the last
+# varying fastest, also with two coefficients of one law (read into one
+# sub-dictionary) and another parameter between them
+order="$(newCase order)"
+(
+    cd "$order" || exit 1
+    setEntry constant/transportProperties frictionModel Voellmy
+    foamDictionary constant/transportProperties -entry VoellmyCoeffs -set "{ mu 0.3; xi 500; }" > /dev/null
+    setEntry system/controlDict endTime 0.1
+    setEntry system/controlDict writeInterval 0.1
+) || fail "order: setting up a Voellmy case"
+ensembleDict "$order" 'parameters
+{
+    "VoellmyCoeffs/mu" (0.2 0.3);
+    hScale (1 2);
+    "VoellmyCoeffs/xi" (400 800 1600);
+}'
+(cd "$order" && savageHutterFoam -ensemble -backend cpu > log.ensemble 2>&1)
+got=""
+want=""
+for k in $(seq 0 11)
+do
+    f="$order/ensemble/$(printf 'member%04d' "$k")/parameters"
+    got="$got $(foamDictionary "$f" -entry VoellmyCoeffs/mu -value 2>/dev/null)/$(foamDictionary "$f" -entry hScale -value 2>/dev/null)/$(foamDictionary "$f" -entry VoellmyCoeffs/xi -value 2>/dev/null)"
+    mu=$(echo "0.2 0.3" | cut -d' ' -f$((k / 6 + 1)))
+    hs=$(echo "1 2" | cut -d' ' -f$(((k / 3) % 2 + 1)))
+    xi=$(echo "400 800 1600" | cut -d' ' -f$((k % 3 + 1)))
+    want="$want $mu/$hs/$xi"
+done
+if [ "$got" = "$want" ]
+then
+    pass "product order (mu, hScale, xi as listed, xi fastest):$(echo "$got" | cut -c1-60)..."
+else
+    fail "product order: got$got, want$want"
+fi
+
 # Samples: reproducible from the seed
 sampled='parameters
 {
@@ -412,6 +479,8 @@ expectRejected unknownKeyword 'parameters { hScale (1 2); } sample 4;' \
 expectRejected distributionWithCombine 'parameters { hScale uniform (1 2); }' \
     "needs 'samples N; seed S;'"
 expectRejected badThreshold 'parameters { hScale (1 2); } thresholds (0.1 -1);' "thresholds"
+expectRejected sameThreshold 'parameters { hScale (1 2); } thresholds (0.1 0.1000000001);' "twice"
+expectRejected seedWithoutSamples 'parameters { hScale (1 2); } seed 3;' "seed without samples"
 rm -f "$base/system/ensembleDict.x"
 noDict="$(newCase noDict)"
 rm -f "$noDict/system/ensembleDict"

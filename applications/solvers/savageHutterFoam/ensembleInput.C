@@ -9,6 +9,7 @@
 #include "DynamicList.H"
 #include "mathematicalConstants.H"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <random>
@@ -90,6 +91,13 @@ ensembleInput::ensembleInput(const Time& runTime, const caseInput& input)
     }
     const dictionary& pd = dict.subDict("parameters");
     const bool sampled = dict.found("samples");
+    if (!sampled && dict.found("seed"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "seed without samples: a seed draws 'samples N' members from"
+            << " ranges; with listed values (combine) there is nothing to draw"
+            << nl << exit(FatalIOError);
+    }
     if (sampled && dict.found("combine"))
     {
         FatalIOErrorInFunction(dict)
@@ -112,8 +120,11 @@ ensembleInput::ensembleInput(const Time& runTime, const caseInput& input)
     allValid.append("release");
     // The entries in the order listed: a keyword path such as
     // "CoulombCoeffs/delta" reads as the entry delta of a sub-dictionary
-    // CoulombCoeffs (so does CoulombCoeffs { delta (...); })
+    // CoulombCoeffs (so does CoulombCoeffs { delta (...); }), which gathers
+    // every path into it where the first appeared: their lines in the file
+    // give back the order they were written in
     DynamicList<Tuple2<word, const dictionary*>> entries;
+    DynamicList<label> lines;
     for (const word& name : pd.toc())
     {
         if (pd.isDict(name))
@@ -122,12 +133,32 @@ ensembleInput::ensembleInput(const Time& runTime, const caseInput& input)
             for (const word& key : sub.toc())
             {
                 entries.append({name + "/" + key, &sub});
+                lines.append(sub.findEntry(key, keyType::LITERAL)->startLineNumber());
             }
         }
         else
         {
             entries.append({name, &pd});
+            lines.append(pd.findEntry(name, keyType::LITERAL)->startLineNumber());
         }
+    }
+    {
+        labelList order(entries.size());
+        forAll(order, i)
+        {
+            order[i] = i;
+        }
+        std::stable_sort
+        (
+            order.begin(), order.end(),
+            [&](const label a, const label b) { return lines[a] < lines[b]; }
+        );
+        DynamicList<Tuple2<word, const dictionary*>> sorted;
+        for (const label i : order)
+        {
+            sorted.append(entries[i]);
+        }
+        entries.transfer(sorted);
     }
     List<parameter> params;
     wordList listed;
@@ -429,6 +460,26 @@ ensembleInput::ensembleInput(const Time& runTime, const caseInput& input)
                 << exit(FatalIOError);
         }
     }
+    const auto distinct = [&](const scalarList& v, const char* key)
+    {
+        wordList names;
+        for (const scalar x : v)
+        {
+            char buf[64];
+            std::snprintf(buf, sizeof buf, "%g", x);
+            if (names.found(buf))
+            {
+                FatalIOErrorInFunction(dict)
+                    << key << " " << v << ": " << buf << " twice (values"
+                    << " name the statistics' fields by 6 significant"
+                    << " digits: each must differ in those)" << nl
+                    << exit(FatalIOError);
+            }
+            names.append(buf);
+        }
+    };
+    distinct(thresholds, "thresholds");
+    distinct(percentiles, "percentiles");
     if (!(runoutThreshold > 0 && runoutThreshold < 1e30))
     {
         FatalIOErrorInFunction(dict)
