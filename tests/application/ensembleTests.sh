@@ -21,7 +21,8 @@
 #         refused under latestTime and kept, replaced by startFrom
 #         startTime;
 #       - the members' order in a product (the last parameter fastest, two
-#         coefficients of one law with another between them);
+#         coefficients of one law with another between them), and a
+#         Voellmy member byte for byte its single run;
 #       - samples: the same seed draws the same members, another seed
 #         others; parameters files hold what was drawn, within the ranges;
 #       - foamToVTK -case ensemble/statistics and -case ensemble/member<k>
@@ -317,6 +318,30 @@ then
     pass "product order (mu, hScale, xi as listed, xi fastest):$(echo "$got" | cut -c1-60)..."
 else
     fail "product order: got$got, want$want"
+fi
+
+# A Voellmy member (coefficients of another law through memberModel)
+# against its single run: member 7 = mu 0.3, hScale 1, xi 800
+vm="$(newCase voellmySingle)"
+rm -rf "$vm/constant" "$vm/system"
+cp -r "$order/constant" "$order/system" "$vm/"
+rm -f "$vm/system/ensembleDict"
+(
+    cd "$vm" || exit 1
+    setEntry constant/transportProperties VoellmyCoeffs/mu 0.3
+    setEntry constant/transportProperties VoellmyCoeffs/xi 800
+    savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1
+)
+bad=""
+for f in h hU hMax UMax tArrival
+do
+    [ -f "$vm/0.1/$f" ] && same "$vm/0.1/$f" "$order/ensemble/member0007/0.1/$f" || bad="$bad $f"
+done
+if [ -z "$bad" ]
+then
+    pass "Voellmy member 7 (mu 0.3, xi 800): h hU hMax UMax tArrival at t = 0.1 byte for byte its single run"
+else
+    fail "Voellmy member 7 differs from its single run in:$bad"
 fi
 
 # Samples: reproducible from the seed
