@@ -67,6 +67,18 @@ newCase()
     echo "$work/$1"
 }
 
+#- differing <dir> <dir>: the fields of a single run's time directory that
+#  are missing from the first or differ from the second's ("" if none)
+differing()
+{
+    local f bad=""
+    for f in h hU hMax UMax tArrival
+    do
+        [ -f "$1/$f" ] && same "$1/$f" "$2/$f" || bad="$bad $f"
+    done
+    echo "$bad"
+}
+
 ensembleDict()
 {
     cat > "$1/system/ensembleDict" <<DICT
@@ -155,11 +167,7 @@ open("0/h", "wb").write(data[:m.end()] + body + data[m.end() + 8 * n:])
 PY
         savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1
     )
-    bad=""
-    for f in h hU hMax UMax tArrival
-    do
-        [ -f "$one/2/$f" ] && same "$one/2/$f" "$main/ensemble/$m/2/$f" || bad="$bad $f"
-    done
+    bad="$(differing "$one/2" "$main/ensemble/$m/2")"
     if [ -z "$bad" ]
     then
         pass "member $k (delta $delta, $release, hScale $scale): h hU hMax UMax tArrival at t = 2 byte for byte its single run"
@@ -332,11 +340,7 @@ rm -f "$vm/system/ensembleDict"
     setEntry constant/transportProperties VoellmyCoeffs/xi 800
     savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1
 )
-bad=""
-for f in h hU hMax UMax tArrival
-do
-    [ -f "$vm/0.1/$f" ] && same "$vm/0.1/$f" "$order/ensemble/member0007/0.1/$f" || bad="$bad $f"
-done
+bad="$(differing "$vm/0.1" "$order/ensemble/member0007/0.1")"
 if [ -z "$bad" ]
 then
     pass "Voellmy member 7 (mu 0.3, xi 800): h hU hMax UMax tArrival at t = 0.1 byte for byte its single run"
