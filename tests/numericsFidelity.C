@@ -235,6 +235,180 @@ void slopeAtOpenSides(Counter& t)
 }
 
 
+//- Whether a run from a state at rest keeps it: the largest speed over
+//  the wet cells and change of h after tEnd
+struct RestCheck
+{
+    double vmax = 0;    //!< largest |v| over the cells with h > 1e-6 m
+    double dh = 0;      //!< largest |h - h0|
+    long wet = 0;
+    long steps = 0;
+};
+
+RestCheck runRest(Problem<double>& pb, double tEnd)
+{
+    const std::vector<double> h0 = pb.h;
+    CpuSolver<double> s(pb, false);
+    s.advanceTo(tEnd);
+    std::vector<double> h, hu, hv;
+    s.getState(h, hu, hv);
+    RestCheck r;
+    r.steps = s.steps();
+    for (std::size_t c = 0; c < h.size(); ++c)
+    {
+        r.dh = std::max(r.dh, std::fabs(h[c] - h0[c]));
+        if (h[c] > 1e-6)
+        {
+            ++r.wet;
+            r.vmax = std::max(r.vmax, std::hypot(hu[c], hv[c])/h[c]);
+        }
+    }
+    return r;
+}
+
+//- The earth pressure coefficients the scheme gives a cell at rest with
+//  no strain (physics/earthPressure.H cellCoeffs)
+CellK<double> restingCoeffs(const Params<double>& p)
+{
+    return cellCoeffs(p.K, p.epsilon*p.g, 0.3, 0.0, 0.0, 0.0, 0.0, true,
+        p.staticResistance);
+}
+
+void lakesAtOpenSides(Counter& t)
+{
+    std::printf("\n1d. Lakes at rest reaching open sides (transmissive on all four), "
+                "delta = 0, 64^2 on [-1, 1]^2, t = 1 s\n");
+    std::printf("%-34s %-14s %12s %12s %12s\n",
+        "lake", "earthPressure", "wet cells", "max|v| m/s", "max|dh| m");
+    struct Lake
+    {
+        const char* name;
+        double eta;
+        std::function<double(double, double)> zb;
+    };
+    const Lake lakes[] =
+    {
+        {"wet: tilted plane + bump, eta 0.4", 0.4, [](double x, double y)
+            { return 0.05*(x + y) + 0.2*std::exp(-(x*x + y*y)/0.1); }},
+        {"shoreline across the open sides", 0.3, [](double x, double)
+            { return 0.3 + 0.3*x; }}
+    };
+    for (const Lake& lake : lakes)
+    {
+        for (const bool ap : {false, true})
+        {
+            ModelInput in;
+            in.g = 9.81;
+            in.earthPressure = ap
+                ? EarthPressureModel::activePassive : EarthPressureModel::isotropic;
+            in.phiDeg = 30;
+            in.deltaDeg = 0;
+            const int n = 64;
+            Problem<double> pb(makeParams<double>(in), n, n, -1, 1, -1, 1);
+            setSymmetric(pb, 1, lake.zb, [&](double x, double y)
+            {
+                return std::max(0.0, lake.eta - lake.zb(x, y));
+            });
+            const RestCheck r = runRest(pb, 1.0);
+            const char* K = ap ? "activePassive" : "isotropic";
+            std::printf("%-34s %-14s %12ld %12.3g %12.3g\n", lake.name, K, r.wet, r.vmax, r.dh);
+            t.check(r.vmax <= 1e-12 && r.dh <= 1e-12,
+                std::string(lake.name) + ", " + K
+              + ": at rest to round-off up to the open sides (|v|, |dh| <= 1e-12)");
+        }
+    }
+}
+
+void lakesWithK(Counter& t)
+{
+    std::printf("\n1e. Lakes at rest with K != 1: active/passive K without the static "
+                "resistance (no K = 1 at rest), delta = 0, so K h + zb is constant at "
+                "rest; 64^2 on [-1, 1]^2, t = 1 s\n");
+    std::printf("%-8s %-12s %10s %10s %12s %12s %12s\n",
+        "sides", "bed", "Kx", "Ky", "wet cells", "max|v| m/s", "max|dh| m");
+    for (const bool open : {false, true})
+    {
+        for (const bool shoreline : {false, true})
+        {
+            ModelInput in;
+            in.g = 9.81;
+            in.earthPressure = EarthPressureModel::activePassive;
+            in.phiDeg = 30;
+            in.deltaDeg = 0;
+            in.staticResistance = false;
+            in.stoppingCriterion = false;
+            const Params<double> p = makeParams<double>(in);
+            const CellK<double> K = restingCoeffs(p);
+            const int n = 64;
+            Problem<double> pb(p, n, n, -1, 1, -1, 1);
+            if (!open)
+            {
+                for (int s = 0; s < 4; ++s)
+                {
+                    pb.bc.type[s] = BCType::wall;
+                }
+            }
+            const auto bed = [shoreline](double x, double y)
+            {
+                const double r = std::hypot(x, y);
+                return shoreline ? 0.5*r : 0.05*(x + y) + 0.2*std::exp(-r*r/0.1);
+            };
+            const double eta = shoreline ? 0.15 : 0.2;
+            setSymmetric(pb, 1, bed, [&](double x, double y)
+            {
+                return std::max(0.0, (eta - bed(x, y))/K.kx);
+            });
+            const RestCheck r = runRest(pb, 1.0);
+            std::printf("%-8s %-12s %10.6f %10.6f %12ld %12.3g %12.3g\n",
+                open ? "open" : "walls", shoreline ? "bowl" : "plane+bump", K.kx, K.ky,
+                r.wet, r.vmax, r.dh);
+            t.check(std::fabs(K.kx - K.ky) <= 1e-15 && K.kx < 0.5,
+                "at rest without static resistance K is the active value, "
+                "Kx = Ky = (1 - sin phi)/(1 + sin phi) for delta = 0 (to 1e-15)");
+            t.check(r.vmax <= 1e-12 && r.dh <= 1e-12,
+                fmt("K = %.4f, ", K.kx) + (open ? "open sides, " : "walls, ")
+              + (shoreline ? "shoreline" : "wet")
+              + ": K h + zb = const kept at rest to round-off (|v|, |dh| <= 1e-12)");
+        }
+    }
+}
+
+void frictionRestOnCurvedBed(Counter& t)
+{
+    std::printf("\n1f. Held by friction alone where zeta(x) varies: as 1b, with the "
+                "static resistance and the stopping criterion off (a cell at rest is "
+                "held by the friction impulse, friction.H), h = 0.3 m, t = 2 s\n");
+    for (const bool ap : {false, true})
+    {
+        ModelInput in;
+        in.g = 9.81;
+        in.earthPressure = ap
+            ? EarthPressureModel::activePassive : EarthPressureModel::isotropic;
+        in.phiDeg = 30;
+        in.deltaDeg = 25;
+        in.staticResistance = false;
+        in.stoppingCriterion = false;
+        Problem<double> pb(makeParams<double>(in), 60, 28, 0, 30, -7, 7);
+        for (int s = 0; s < 4; ++s)
+        {
+            pb.bc.type[s] = BCType::wall;
+        }
+        pb.setInclination([](double x)
+        {
+            const double z0 = 20*deg;
+            return x <= 17.5 ? z0 : (x < 21.5 ? z0*(1 - (x - 17.5)/4) : 0.0);
+        });
+        pb.setState([](double, double) { return Primitive{0.3, 0, 0}; });
+        const RestCheck r = runRest(pb, 2.0);
+        const char* K = ap ? "activePassive" : "isotropic";
+        std::printf("  %-14s max|v| %.3g, max|dh| %.3g after %ld steps\n", K, r.vmax, r.dh, r.steps);
+        t.check(r.vmax == 0 && r.dh == 0,
+            std::string(K) + ": the layer stays exactly at rest across the change of zeta "
+            "(one beta per face: no mass crosses a face between equal states)");
+    }
+}
+
+
 // * * * * * * * * * * * * * * 2. Mirror symmetry  * * * * * * * * * * * * * //
 
 void symmetry(Counter& t)
@@ -417,9 +591,7 @@ std::vector<CellK<Real>> schemeCoeffs
     {
         for (int i = 0; i < m.g.nx; ++i)
         {
-            const int c = m.g.idx(i, j);
-            K.push_back(cellEarthPressure(m, i, primitive(U[c]), cellSlopes(m, U, c, 1),
-                cellSlopes(m, U, c, m.g.stride())));
+            K.push_back(cellStencil(m, U, i, j).K);
         }
     }
     return K;
@@ -507,6 +679,9 @@ int main()
     lakes(test);
     restOnCurvedBed(test);
     slopeAtOpenSides(test);
+    lakesAtOpenSides(test);
+    lakesWithK(test);
+    frictionRestOnCurvedBed(test);
     symmetry(test);
     momentum(test);
     precisions(test);
