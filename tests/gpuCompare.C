@@ -2,7 +2,8 @@
   GPU against CPU: the CUDA backend must reproduce the CPU backend
 
     Usage: gpuCompare damBreak|collapsingPile|lakeAtRest|inclinedPlane|
-                      inflowPlane|granularJet|voellmyPile
+                      inflowPlane|granularJet|voellmyPile|openLake|
+                      outflowCorner
 
     Runs the case on the CPU backend (OpenMP) and on the CUDA backend, in
     double and in float, and compares the states at several output times.
@@ -473,7 +474,21 @@ int main(int argc, char** argv)
         return run([](auto r) { return shcases::voellmyPile<decltype(r)>(64); },
             {0.1, 0.5, 1, 2}, false, 0);
     }
+    if (which == "openLake")
+    {
+        staticCase = true;
+        std::printf("Lake at rest with K != 1, open sides, 97x41, t = 1 s\n");
+        return run([](auto r) { return shcases::openLake<decltype(r)>(); },
+            {0.25, 0.5, 1}, false, 2);
+    }
+    if (which == "outflowCorner")
+    {
+        std::printf("Pile leaving through the corner of open sides, 97x41, t = 2 s\n");
+        return run([](auto r) { return shcases::outflowCorner<decltype(r)>(); },
+            {0.5, 1, 2}, false, 3);
+    }
     std::fprintf(stderr, "usage: gpuCompare damBreak|collapsingPile|"
-        "lakeAtRest|inclinedPlane|inflowPlane|granularJet|voellmyPile\n");
+        "lakeAtRest|inclinedPlane|inflowPlane|granularJet|voellmyPile|"
+        "openLake|outflowCorner\n");
     return 2;
 }
