@@ -34,11 +34,12 @@
      (delta = 0, no static resistance), zeta = 0 and a flat bed, walls
      that the material never reaches: no force acts, so the total momentum
      sum(hu, hv) dA must stay what it was, to round-off (relative to
-     sum |hU| dA), from t = 0.25 s (by then the pile's sharp initial
+     sum |hU| dA), from t = 0.5 s (by then the pile's sharp initial
      edge, whose draining cells have their speed bounded, the counted
-     non-conservative rule of scheme.H, limitThinCell, has spread) to
-     t = 1 s (the thin cells bounded in between, counted and printed, hold
-     too little mass to register).  hDry = 1e-12: the
+     non-conservative rule of scheme.H, limitThinCell, has spread: the
+     bounds of 0.3-0.4 s still took 2e-14 of the momentum, those after
+     0.5 s at most 6e-15 per 0.05 s) to t = 1 s (the thin cells bounded
+     in between, counted and printed, hold too little mass to register).  hDry = 1e-12: the
      partial-wet cells of eq. (29), which take a neighbour's velocity, are
      the paper's one non-conservative rule.  Before
      the face carried one K, the pressure of two different K's on its two
@@ -46,10 +47,12 @@
   4. Float and double take the same active/passive decisions.  On the
      state of the collapsing pile at t = 0.2 s the regularised
      coefficients (earthPressure.H) of every wet cell are computed in both
-     precisions from the same state; they must agree to 1e-3 (the strain
-     band amplifies float's rounding of the strain, 6e-8 relative, by at
-     most 1/strainBand = 1e3 times the ratio of speed to wave speed).  The
-     coefficients are those the scheme computes (cellEarthPressure).
+     precisions from the same state; they must agree to 1e-4.  The switch
+     amplifies float's rounding of the velocity difference, 6e-8 of |u|,
+     by the slope of the blend, 1.5 dK over the band s0 (c/h) d in du: at
+     most 1.5 dK 6e-8 |u| h/(s0 c d), 2e-5 for the pile's Froude numbers
+     below 1 and h/d below 20 (dK = 1.3).  The coefficients are those the
+     scheme computes (cellStencil).
   5. The time step with the front speed: next to a dry cell the CFL rate of
      eq. (24) takes |u| + 2c (eq. 28), elsewhere |u| + c.
 \*---------------------------------------------------------------------------*/
@@ -271,7 +274,7 @@ RestCheck runRest(Problem<double>& pb, double tEnd)
 CellK<double> restingCoeffs(const Params<double>& p)
 {
     return cellCoeffs(p.K, p.epsilon*p.g, 0.3, 0.0, 0.0, 0.0, 0.0, true,
-        p.staticResistance);
+        p.staticResistance, 1.0, 1.0);
 }
 
 void lakesAtOpenSides(Counter& t)
@@ -516,14 +519,14 @@ void momentum(Counter& t)
             }
         };
         CpuSolver<double> s(pb, false);
-        s.advanceTo(0.25);
+        s.advanceTo(0.5);
         const long long clips0 = s.diagnostics().speedClips;
         double p0x, p0y, sc;
         long mv;
         total(s, p0x, p0y, mv, sc);
-        std::printf("%6.2f %16.12f %16.12f %12s %12s %8ld\n", 0.25, p0x, p0y, "", "", mv);
+        std::printf("%6.2f %16.12f %16.12f %12s %12s %8ld\n", 0.5, p0x, p0y, "", "", mv);
         double worst = 0;
-        for (const double tt : {0.5, 0.75, 1.0})
+        for (const double tt : {0.625, 0.75, 0.875, 1.0})
         {
             s.advanceTo(tt);
             double px, py;
@@ -543,7 +546,7 @@ void momentum(Counter& t)
             edge = std::max({edge, h[k], h[k + n*(n - 1)], h[n*k], h[n - 1 + n*k]});
         }
         const long long clips = s.diagnostics().speedClips - clips0;
-        std::printf("  thin cells bounded: %lld before t = 0.25, %lld after\n", clips0, clips);
+        std::printf("  thin cells bounded: %lld before t = 0.5, %lld after; %ld steps\n", clips0, clips, s.steps());
         t.check(edge == 0, "the material stays clear of the walls");
         t.check(worst <= 1e-13,
             fmt("total momentum conserved to %.1e of sum |hU| dA (<= 1e-13)", worst));
@@ -640,8 +643,8 @@ void precisions(Counter& t)
         pd.K.kx[0], pd.K.kx[1], wet, blended);
     std::printf("  max |Kx(double) - Kx(float)| = %.3g, max |Ky(double) - Ky(float)| = %.3g\n",
         dKx, dKy);
-    t.check(wet > 1000 && dKx <= 1e-3 && dKy <= 1e-3,
-        "float and double coefficients agree to 1e-3 in every wet cell");
+    t.check(wet > 1000 && dKx <= 1e-4 && dKy <= 1e-4,
+        "float and double coefficients agree to 1e-4 in every wet cell");
 }
 
 

@@ -146,21 +146,22 @@ void earthPressure(Counter& t)
     t.check(close(E.kx[0], 2.408176382084, 1e-10) && close(E.kx[1], E.kx[0], 1e-12),
         "delta = phi gives Kx act = pass = 2.40818");
     // Selection, eqs (9)-(10), regularised (earthPressure.H): h = 1,
-    // bn = 1 (c = 1); strains well beyond the band select the table's
-    // entries exactly, zero momentum gives 1
-    const double big = 10*strainBand;
-    const CellK<double> rest = cellCoeffs(K, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, true, true);
-    const CellK<double> comp = cellCoeffs(K, 1.0, 1.0, 0.5, 0.0, -big, big, false, true);
-    const CellK<double> ext = cellCoeffs(K, 1.0, 1.0, 0.5, 0.0, big, -big, false, true);
+    // bn = 1 (c = 1), cells 1 wide, so the band is strainRateBand in h du;
+    // strains well beyond the band select the table's entries exactly,
+    // zero momentum gives 1
+    const double big = 10*strainRateBand;
+    const CellK<double> rest = cellCoeffs(K, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, true, true, 1.0, 1.0);
+    const CellK<double> comp = cellCoeffs(K, 1.0, 1.0, 0.5, 0.0, -big, big, false, true, 1.0, 1.0);
+    const CellK<double> ext = cellCoeffs(K, 1.0, 1.0, 0.5, 0.0, big, -big, false, true, 1.0, 1.0);
     t.check(rest.kx == 1 && rest.ky == 1 && comp.kx == K.kx[1] && comp.ky == K.ky[1][0]
          && ext.kx == K.kx[0] && ext.ky == K.ky[0][1],
         "selection: K = 1 at rest, passive Kx under compression, active under extension, eqs (9)-(10)");
     // Zero strain is active (eq. 9: du/dx >= 0); half the band into
     // compression the coefficients are half way; towards zero speed they
     // return to 1
-    const CellK<double> zero = cellCoeffs(K, 1.0, 1.0, 0.5, 0.0, 0.0, 0.0, false, true);
-    const CellK<double> mid = cellCoeffs(K, 1.0, 1.0, 0.5, 0.0, -0.5*strainBand, 0.0, false, true);
-    const CellK<double> slow = cellCoeffs(K, 1.0, 1.0, 1e-9, 0.0, big, big, false, true);
+    const CellK<double> zero = cellCoeffs(K, 1.0, 1.0, 0.5, 0.0, 0.0, 0.0, false, true, 1.0, 1.0);
+    const CellK<double> mid = cellCoeffs(K, 1.0, 1.0, 0.5, 0.0, -0.5*strainRateBand, 0.0, false, true, 1.0, 1.0);
+    const CellK<double> slow = cellCoeffs(K, 1.0, 1.0, 1e-9, 0.0, big, big, false, true, 1.0, 1.0);
     std::printf("  zero strain: Kx %.9f; strain -band/2: Kx %.9f (mean of act/pass %.9f); speed 1e-9 c: Kx - 1 = %.3g\n",
         zero.kx, mid.kx, 0.5*(K.kx[0] + K.kx[1]), slow.kx - 1);
     t.check(zero.kx == K.kx[0] && close(mid.kx, 0.5*(K.kx[0] + K.kx[1]), 1e-14),

@@ -107,11 +107,9 @@ Real CpuSolver<Real>::stableDt()
 {
     const Grid<Real>& g = model_.g;
     const Fields<Real> U = U_.view();
-    if (halo_)
-    {
-        // The wave rate of a cell looks at its neighbours' h
-        fillStateGhosts();
-    }
+    // The wave rate of a cell looks at its neighbours' h and, for the
+    // active/passive switch (scheme.H switchRate), their velocities
+    fillStateGhosts();
     Real rate = inflowWaveRate(model_);
 
     #pragma omp parallel for if(parallel_) reduction(max:rate) schedule(static)
@@ -318,14 +316,14 @@ PeakMaps<Real> CpuSolver<Real>::peakMaps()
 template<class Real>
 Diagnostics CpuSolver<Real>::diagnostics()
 {
+    // The wave rate of a cell looks at its neighbours
+    fillStateGhosts();
     if (!halo_)
     {
         Diagnostics d = diagnosticsOf(model_, U_.view());
         d.speedClips = speedClips_;
         return d;
     }
-    // The wave rate of a cell looks at its neighbours' h
-    fillStateGhosts();
     Diagnostics d = diagnosticsOf(model_, U_.view());
     d.speedClips = speedClips_;
     return reducedDiagnostics(*halo_, d);

@@ -344,6 +344,8 @@ Params<Real> makeParams(const ModelInput& in)
     }
     p.K.kxMax = Real(K.kxMax);
     p.K.kyMax = Real(K.kyMax);
+    p.K.dKx = Real(K.dKx);
+    p.K.dKy = Real(K.dKy);
 
     p.friction = FrictionParams<Real>();
     p.friction.law = in.frictionLaw;
