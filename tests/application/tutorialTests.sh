@@ -7,7 +7,9 @@
 #     the style of OpenFOAM's Alltest, in copies under the work directory:
 #     a tutorial fails when its Allrun fails, a log holds "FOAM FATAL", a
 #     savageHutterFoam log lacks its final "End", or its plot script's own
-#     checks (--check: the paper's tables, volume, h >= 0) fail.  A
+#     checks (--check: the paper's tables, volume, h >= 0) fail, or a film
+#     runs away (filmCheck.py: at the last time and in the peak maps no
+#     cell with h > 1e-4 m faster than its flow's |u| + 2 sqrt(g h)).  A
 #     tutorial with an Allrun-parallel is also run decomposed, shortened
 #     (2 processes), and fails unless its fields are the serial run's
 #     (log.compareDecomposed); without mpirun that run is skipped.
@@ -76,6 +78,14 @@ do
         problems="$problems plot --check failed;"
     fi
     cat "$work/$t.check.log"
+    # No runaway films: at the last time and in the peak maps no thin cell
+    # faster than its flow allows (filmCheck.py)
+    if ! "$project/tests/application/filmCheck.py" "$dir" > "$work/$t.films.log" 2>&1
+    then
+        problems="$problems a film runs away (filmCheck.py);"
+    fi
+    grep -v "^PASS" "$work/$t.films.log"
+    echo "    filmCheck: $(grep -c "^PASS" "$work/$t.films.log") checks passed"
     verdict "$t" "$nSolver solver runs" "$work/$t.Allrun.log"
 
     # Its decomposed run, shortened (2 processes, checked against the
