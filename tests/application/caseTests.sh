@@ -99,6 +99,13 @@ do
     expectFailure "delta$v" "delta" "[0, 90)"
 done
 
+for v in -0.1 1 1.5
+do
+    d=$(newCase kineticEnergyStop$v)
+    setEntry "$d/system/fvSolution" savageHutter/kineticEnergyStop "$v"
+    expectFailure "kineticEnergyStop$v" "kineticEnergyStop" "0 <= kineticEnergyStop < 1" "fvSolution"
+done
+
 d=$(newCase missingFrictionModel)
 foamDictionary "$d/$tp" -entry frictionModel -remove > /dev/null
 expectFailure missingFrictionModel "frictionModel" "Valid choices" "Coulomb"

@@ -13,7 +13,10 @@
 #     100 m to either side) keeps the flow off the sides.  terrainToCase
 #     (20 m cells, 47 x 10), the solver to rest (steadyStateTolerance),
 #     hazardMaps; passes when |comTravelAngle - delta| < 0.5 deg, no volume
-#     left the mesh and the run ended at rest.  About 2 s.
+#     left the mesh and the run ended at rest.  Then the same chute with
+#     Voellmy's friction must end by kineticEnergyStop (the flow's kinetic
+#     energy below 1 % of its peak), log that energy as the fields' own,
+#     and run no film away (filmCheck.py).  About 4 s.
 #     Prints one line per check and "N passed, M failed, K skipped".
 #
 # Usage
@@ -110,6 +113,63 @@ then
     fi
 else
     fail "terrainToCase, blockMesh, savageHutterFoam or hazardMaps failed (see $work/log.*)"
+fi
+echo "($((SECONDS - start)) s)"
+
+# -- The end of a Voellmy run (kineticEnergyStop): the same chute with
+#    Voellmy's friction (mu 0.2, xi 2000 m/s^2) never comes to rest where
+#    it is steeper than atan(mu) = 11.3 deg (its films drain at their
+#    terminal speed); the run must end when the kinetic energy falls
+#    below 1 % of its peak, the energy logged must be sum h |u|^2/2 dA of
+#    the fields written at that time, and no film may run away
+#    (filmCheck.py)
+start=$SECONDS
+v="$work/voellmy"
+rm -rf "$v"
+mkdir -p "$v"
+cp -r system constant 0 "$v"/
+(
+    cd "$v" || exit 1
+    setEntry constant/transportProperties frictionModel Voellmy
+    setEntry constant/transportProperties VoellmyCoeffs "{ mu 0.2; xi 2000; }"
+    setEntry system/fvSolution savageHutter/kineticEnergyStop 0.01
+    runApplication savageHutterFoam
+) > "$work/voellmy.log" 2>&1
+log="$v/log.savageHutterFoam"
+stopped="$(sed -n 's/.*the flow has stopped at t = \([0-9.e+-]*\).*/\1/p' "$log")"
+if [ -n "$stopped" ] && grep -q "^End" "$log" \
+    && $python -c "import sys; sys.exit(0 if float('$stopped') < 400 else 1)"
+then
+    pass "Voellmy: the run ends at t = $stopped < endTime 400 (kinetic energy below 1 % of its peak)"
+    if $python - "$v" "$stopped" "$log" <<'PYEOF'
+import os, re, sys
+sys.path.insert(0, os.path.join(os.environ["SAVAGEHUTTER_DIR"], "tutorials", "tools"))
+import foamCase
+case, t, log = sys.argv[1:]
+t = foamCase.closest_time(case, float(t))
+h = foamCase.read_field(case, t, "h")
+hU = foamCase.read_field(case, t, "hU", h.size)
+wet = h > 1e-6
+m = re.search(r"Mesh: \d+ x \d+ cells of (\S+) x (\S+) m", open(log).read())
+dA = float(m.group(1)) * float(m.group(2))
+e = 0.5 * ((hU[wet, 0] ** 2 + hU[wet, 1] ** 2) / h[wet]).sum() * dA
+logged = float(re.findall(r"Kinetic energy: (\S+) m", open(log).read())[-1])
+print("      kinetic energy at t = %s: logged %.8g, from the fields %.8g" % (t, logged, e))
+sys.exit(0 if abs(logged - e) <= 1e-6 * e else 1)
+PYEOF
+    then
+        pass "Voellmy: the logged kinetic energy is sum h |u|^2/2 dA of the written fields"
+    else
+        fail "Voellmy: the logged kinetic energy is not that of the written fields ($log)"
+    fi
+    if "$project/tests/application/filmCheck.py" "$v"
+    then
+        pass "Voellmy: no film runs away (filmCheck.py)"
+    else
+        fail "Voellmy: a film runs away (filmCheck.py above)"
+    fi
+else
+    fail "Voellmy: the run did not end by kineticEnergyStop before endTime (see $log)"
 fi
 echo "($((SECONDS - start)) s)"
 

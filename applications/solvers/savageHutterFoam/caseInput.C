@@ -49,7 +49,7 @@ word readChoice
 const wordList solverKeywords
 ({
     "limiter", "stoppingCriterion", "staticResistance", "hDry", "holdResting",
-    "steadyStateTolerance"
+    "steadyStateTolerance", "kineticEnergyStop"
 });
 
 const wordList transportKeywords
@@ -102,6 +102,7 @@ caseInput::caseInput(const fvMesh& mesh)
     jetDict_(nullptr),
     hasJet(false),
     steadyStateTolerance(0),
+    kineticEnergyStop(0),
     adjustTimeStep(false),
     deltaT(0),
     maxDeltaT(GREAT),
@@ -215,6 +216,15 @@ caseInput::caseInput(const fvMesh& mesh)
             << "steadyStateTolerance must not be negative (0: off), got "
             << steadyStateTolerance << nl << exit(FatalIOError);
     }
+    kineticEnergyStop =
+        solverDict_.getOrDefault<scalar>("kineticEnergyStop", 0);
+    if (!(kineticEnergyStop >= 0 && kineticEnergyStop < 1))
+    {
+        FatalIOErrorInFunction(solverDict_)
+            << "kineticEnergyStop is a fraction of the run's peak kinetic"
+            << " energy, 0 <= kineticEnergyStop < 1 (0: off), got "
+            << kineticEnergyStop << nl << exit(FatalIOError);
+    }
 
     auto onOff = [](const bool b) { return b ? "on" : "off"; };
     Info<< "    limiter           " << sh::toString(model.limiter).c_str()
@@ -224,7 +234,9 @@ caseInput::caseInput(const fvMesh& mesh)
         << "    holdResting       " << onOff(model.holdResting) << nl
         << "    hDry              " << model.hDry << nl
         << "    steadyStateTolerance " << steadyStateTolerance
-        << (steadyStateTolerance > 0 ? " m/s (RMS of |dh/dt| over wet cells)" : " (off)") << nl;
+        << (steadyStateTolerance > 0 ? " m/s (RMS of |dh/dt| over wet cells)" : " (off)") << nl
+        << "    kineticEnergyStop " << kineticEnergyStop
+        << (kineticEnergyStop > 0 ? " (of the peak kinetic energy)" : " (off)") << nl;
 
     // controlDict: the CFL number of eq. (24) and the output times
     control = controlSettings::read(mesh.time().controlDict());
