@@ -24,6 +24,10 @@
   2. The paper's section 5.3 (the cap sliding down 35 deg onto the flat,
      delta = phi = 30 deg, g = 1), 120 x 56, t = 60: at the end no cell
      with h > 1e-4 faster than a tenth of the flow's peak speed.
+  In both chute runs the CFL rate of the last step must be no larger
+  than the largest a cell of the body (h >= 5 % of the peak) can have,
+  (|u| + 2 sqrt(g K_max h))/dx + (|v| + 2 sqrt(g K_max h))/dy: the time
+  step at the end of the deposit is not set by thin cells.
   In every case the peak speed map UMax over the cells that were wet
   (hMax > 1e-4 m) must not exceed 1.05 times its maximum over the flow's
   body (hMax at least 5 % of the peak thickness): the maps show the body,
@@ -210,6 +214,32 @@ void chute(Counter& test, bool voellmy)
                     "%.3f (cell %d, %d)\n", worst, at % nx, at/nx);
         test.check(worst <= 1, name + ": no cell with h > 1e-4 m faster than 1.5 times "
             "its stencil's terminal speed (+ 0.1 m/s) at t = 300 s");
+    }
+    // The time step at the end is the body's: the CFL rate of eq. (24)
+    // is no larger than the largest a cell of the body (h >= 5 % of the
+    // peak) can have, (|u| + 2 sqrt(g K_max h))/dx + (|v| + ...)/dy
+    {
+        const Params<double> p = makeParams<double>(in);
+        const double kMax = std::max(p.K.kxMax, p.K.kyMax);
+        double hPeak = 0, bodyRate = 0;
+        for (int c = 0; c < nx*ny; ++c)
+        {
+            hPeak = std::max(hPeak, h[c]);
+        }
+        for (int c = 0; c < nx*ny; ++c)
+        {
+            if (h[c] >= 0.05*hPeak)
+            {
+                const double c2 = 2*std::sqrt(in.g*kMax*h[c]);
+                bodyRate = std::max(bodyRate,
+                    (std::fabs(hu[c])/h[c] + c2)/10 + (std::fabs(hv[c])/h[c] + c2)/10);
+            }
+        }
+        const double rate = s.diagnostics().maxRate;
+        std::printf("  CFL rate at the end %.4g 1/s, the body's largest possible %.4g 1/s\n",
+            rate, bodyRate);
+        test.check(rate <= bodyRate,
+            name + ": the time step at the end is the body's, not set by thin cells");
     }
     // From the release's top (x = 60 m) to the end; the bumps' and the
     // channel's relief (22.5 m at its rim) on top
