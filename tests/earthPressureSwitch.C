@@ -39,6 +39,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "testing.H"
+#include "gpuCases.H"
 
 using namespace sh;
 using namespace shtest;
@@ -164,17 +165,8 @@ double collapseAsymmetry(EarthPressureModel K, double& input, long& moving)
     in.deltaDeg = 20;
     in.earthPressure = K;
     const int n = 96;
-    Problem<double> pb(makeParams<double>(in), n, n, -0.3, 0.3, -0.3, 0.3);
-    for (int s = 0; s < 4; ++s)
-    {
-        pb.bc.type[s] = BCType::wall;
-    }
-    // Cell centres in floating point: x0 + (i + 1/2) dx
-    pb.setTopography([](double x, double y) { return 0.5*std::hypot(x, y); });
-    pb.setState([](double x, double y)
-    {
-        return Primitive{std::max(0.0, 0.2 - std::hypot(x, y)), 0, 0};
-    });
+    // Cell centres in floating point: x0 + (i + 1/2) dx (Problem's)
+    Problem<double> pb = shcases::pileInBowl<double>(in, n);
     auto asymmetry = [n](const std::vector<double>& h)
     {
         double a = 0;

@@ -58,6 +58,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "testing.H"
+#include "gpuCases.H"
 
 #include "host/padded.H"
 
@@ -164,33 +165,45 @@ void lakes(Counter& t)
 }
 
 
+//- A uniform layer, h = 0.3 m at rest, on zeta(x) of eq. (35) with
+//  zeta0 = 20 deg, phi = 30, delta = 25 deg, a flat bed, walls, 60 x 28
+//  cells on [0, 30] x [-7, 7]; staticRule: the static resistance and the
+//  stopping criterion on (the defaults) or off
+Problem<double> layerOnVaryingZeta(bool activePassive, bool staticRule)
+{
+    ModelInput in;
+    in.g = 9.81;
+    in.earthPressure = activePassive
+        ? EarthPressureModel::activePassive : EarthPressureModel::isotropic;
+    in.phiDeg = 30;
+    in.deltaDeg = 25;
+    in.staticResistance = staticRule;
+    in.stoppingCriterion = staticRule;
+    Problem<double> pb(makeParams<double>(in), 60, 28, 0, 30, -7, 7);
+    for (int s = 0; s < 4; ++s)
+    {
+        pb.bc.type[s] = BCType::wall;
+    }
+    pb.setInclination([](double x)
+    {
+        const double z0 = 20*deg;
+        return x <= 17.5 ? z0 : (x < 21.5 ? z0*(1 - (x - 17.5)/4) : 0.0);
+    });
+    pb.setState([](double, double) { return Primitive{0.3, 0, 0}; });
+    return pb;
+}
+
 void restOnCurvedBed(Counter& t)
 {
     std::printf("\n1b. Rest on a varying reference surface: zeta(x) of eq. (35) with "
                 "zeta0 = 20 deg, delta = 25 deg, h = 0.3 m, t = 2 s\n");
     for (const bool ap : {false, true})
     {
-        ModelInput in;
-        in.g = 9.81;
-        in.earthPressure = ap
-            ? EarthPressureModel::activePassive : EarthPressureModel::isotropic;
-        in.phiDeg = 30;
-        in.deltaDeg = 25;
-        Problem<double> pb(makeParams<double>(in), 60, 28, 0, 30, -7, 7);
-        for (int s = 0; s < 4; ++s)
-        {
-            pb.bc.type[s] = BCType::wall;
-        }
-        pb.setInclination([](double x)
-        {
-            const double z0 = 20*deg;
-            return x <= 17.5 ? z0 : (x < 21.5 ? z0*(1 - (x - 17.5)/4) : 0.0);
-        });
+        Problem<double> pb = layerOnVaryingZeta(ap, true);
         pb.setTopography([](double x, double y)
         {
             return 0.2*std::exp(-((x - 10)*(x - 10) + y*y)/4);
         });
-        pb.setState([](double, double) { return Primitive{0.3, 0, 0}; });
         const std::vector<double> h0 = pb.h;
         CpuSolver<double> s(pb, false);
         s.advanceTo(2.0);
@@ -383,25 +396,7 @@ void frictionRestOnCurvedBed(Counter& t)
                 "held by the friction impulse, friction.H), h = 0.3 m, t = 2 s\n");
     for (const bool ap : {false, true})
     {
-        ModelInput in;
-        in.g = 9.81;
-        in.earthPressure = ap
-            ? EarthPressureModel::activePassive : EarthPressureModel::isotropic;
-        in.phiDeg = 30;
-        in.deltaDeg = 25;
-        in.staticResistance = false;
-        in.stoppingCriterion = false;
-        Problem<double> pb(makeParams<double>(in), 60, 28, 0, 30, -7, 7);
-        for (int s = 0; s < 4; ++s)
-        {
-            pb.bc.type[s] = BCType::wall;
-        }
-        pb.setInclination([](double x)
-        {
-            const double z0 = 20*deg;
-            return x <= 17.5 ? z0 : (x < 21.5 ? z0*(1 - (x - 17.5)/4) : 0.0);
-        });
-        pb.setState([](double, double) { return Primitive{0.3, 0, 0}; });
+        Problem<double> pb = layerOnVaryingZeta(ap, false);
         const RestCheck r = runRest(pb, 2.0);
         const char* K = ap ? "activePassive" : "isotropic";
         std::printf("  %-14s max|v| %.3g, max|dh| %.3g after %ld steps\n", K, r.vmax, r.dh, r.steps);
@@ -608,17 +603,7 @@ void precisions(Counter& t)
     in.g = 9.81;
     in.phiDeg = 30;
     in.deltaDeg = 20;     // Kx act != pass (delta < phi)
-    const int n = 64;
-    Problem<double> pb(makeParams<double>(in), n, n, -0.3, 0.3, -0.3, 0.3);
-    for (int s = 0; s < 4; ++s)
-    {
-        pb.bc.type[s] = BCType::wall;
-    }
-    pb.setTopography([](double x, double y) { return 0.5*std::hypot(x, y); });
-    pb.setState([](double x, double y)
-    {
-        return Primitive{std::max(0.0, 0.2 - std::hypot(x, y)), 0, 0};
-    });
+    Problem<double> pb = shcases::pileInBowl<double>(in, 64);
     CpuSolver<double> s(pb, false);
     s.advanceTo(0.2);
     std::vector<double> h, hu, hv;
