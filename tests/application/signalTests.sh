@@ -73,23 +73,38 @@ d="$work/sigint"
 makeCase "$d" 256 32 || { cat "$d.setup.log"; fail "sigint: set-up failed"; }
 setEntry "$d/system/controlDict" endTime 100
 setEntry "$d/system/controlDict" writeInterval 0.05
+cp -r "$d" "$work/sigintSetUp"
 log="$d/log.savageHutterFoam"
-(cd "$d" && exec savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1) &
-pid=$!
-waitFor "$log" "^Starting time loop" 60
-# Past the first write time, so that the stop has one before it
-for i in $(seq 300)
+# A signal that arrives during the last step before a write time stops the
+# run on that write time, rightly; the check of a state off the write
+# times needs one that arrives elsewhere, so the run is made again (a new
+# copy of the case) when the stop lies on the write grid, up to 4 times
+attempts=0
+while :
 do
-    [ -d "$d/0.05" ] && break
-    sleep 0.1
+    attempts=$((attempts + 1))
+    (cd "$d" && exec savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1) &
+    pid=$!
+    waitFor "$log" "^Starting time loop" 60
+    # Past the first write time, so that the stop has one before it
+    for i in $(seq 300)
+    do
+        [ -d "$d/0.05" ] && break
+        sleep 0.1
+    done
+    sleep 0.3
+    t0=$(date +%s.%N)
+    kill -INT "$pid"
+    wait "$pid"
+    rc=$?
+    took=$(python3 -c "print('%.2f' % ($(date +%s.%N) - $t0))")
+    tStop=$(sed -n 's/^SIGINT at t = \([^:]*\): writing and stopping$/\1/p' "$log")
+    onGrid=$(python3 -c "k = float('${tStop:-0.5}')/0.05; print(int(abs(k - round(k)) < 1e-6))")
+    [ "$onGrid" = 1 ] && [ $attempts -lt 4 ] || break
+    echo "      attempt $attempts: the signal stopped the run on the write time $tStop; again"
+    rm -rf "$d"
+    cp -r "$work/sigintSetUp" "$d"
 done
-sleep 0.3
-t0=$(date +%s.%N)
-kill -INT "$pid"
-wait "$pid"
-rc=$?
-took=$(python3 -c "print('%.2f' % ($(date +%s.%N) - $t0))")
-tStop=$(sed -n 's/^SIGINT at t = \([^:]*\): writing and stopping$/\1/p' "$log")
 stopDir=$(sed -n 's/^Stopped by SIGINT at t = .*, written to \([^ ]*\) .*/\1/p' "$log")
 last=$(timeDirs "$d" | tail -n1)
 if [ $rc -eq 0 ] && grep -q "^End" "$log" && [ -n "$tStop" ] && [ -n "$stopDir" ] \
