@@ -71,13 +71,18 @@ fi
 solver="$(command -v savageHutterFoam)" \
     || { echo "sameResults.sh: savageHutterFoam is not on PATH" >&2; exit 2; }
 
-#- listing <dir>: "path sha256" of every file below dir but the logs, sorted
+#- listing <dir> <tutorial>: "path sha256" of every file below dir that the
+#  run wrote, sorted: the logs aside, and the tutorial's own files (inputs,
+#  scripts) where they are unchanged copies
 listing()
 {
     (
         cd "$1" || exit 1
-        find . -type f ! -name 'log.*' ! -name '*.log' -print0 \
-            | sort -z | xargs -0 -r sha256sum | awk '{ print $2, $1 }'
+        find . -type f ! -name 'log.*' ! -name '*.log' | sort \
+            | while IFS= read -r f
+            do
+                cmp -s "$f" "$project/tutorials/$2/$f" || printf '%s\0' "$f"
+            done | xargs -0 -r sha256sum | awk '{ print $2, $1 }'
     )
 }
 
@@ -117,7 +122,7 @@ EOF
         fi
         grep -rqs "approximate" --include='log.savageHutterFoam*' "$dir" \
             && approximate=true
-        listing "$dir" | sed "s|^\./|$precision/$t/|" >> "$out"
+        listing "$dir" "$t" | sed "s|^\./|$precision/$t/|" >> "$out"
     done
 done
 
