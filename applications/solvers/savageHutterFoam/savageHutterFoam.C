@@ -38,7 +38,7 @@ Usage
 
     -ensemble: the members of system/ensembleDict (design.md section 6)
     run together, each written under ensemble/member<k>/, the statistics
-    across members under ensemble/statistics/ (ensembleRun.H).
+    across members under ensemble/statistics/ (run/ensembleRun.H).
 
     Decomposed (decomposePar with method simple, hierarchical or manual
     into rectangles of the block): mpirun -np N savageHutterFoam -parallel,
@@ -47,135 +47,65 @@ Usage
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
+#include "startUp.H"
+#include "runSignals.H"
+#include "timeDirectories.H"
 #include "avalancheCase.H"
 #include "avalancheRun.H"
 #include "ensembleRun.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
-int main(int argc, char *argv[])
+//- The run, single or ensemble, in precision Real
+template<class Real>
+void run(Foam::avalancheCase& ac, const Foam::runOptions& options)
 {
-    argList::addNote
-    (
-        "Savage-Hutter granular avalanche solver (Zhai et al. 2014 scheme)"
-        " on the CPU or the GPU"
-    );
-    argList::addOption
-    (
-        "backend", "auto|cpu|cuda",
-        "where the time loop runs; auto: the GPU when one is present"
-    );
-    argList::addOption
-    (
-        "precision", "double|single",
-        "floating-point precision of the time loop (default double)"
-    );
-    argList::addOption
-    (
-        "logInterval", "seconds",
-        "wall time between progress lines (default 5)"
-    );
-    argList::addBoolOption
-    (
-        "ensemble",
-        "run the members of system/ensembleDict together (ensemble/)"
-    );
-
-    #include "setRootCase.H"
-
-    #ifndef SH_HAVE_MPI
-    if (Pstream::parRun())
+    if (options.ensemble)
     {
-        FatalErrorInFunction
-            << "This savageHutterFoam was built without MPI: no decomposed"
-            << " runs (install libopenmpi-dev, bin/installDependencies, and"
-            << " build again)" << nl << exit(FatalError);
-    }
-    #endif
-
-    const word backend = args.getOrDefault<word>("backend", "auto");
-    const word precision = args.getOrDefault<word>("precision", "double");
-    const scalar logInterval = args.getOrDefault<scalar>("logInterval", 5);
-    if (!wordList({"auto", "cpu", "cuda"}).found(backend))
-    {
-        FatalErrorInFunction
-            << "Unknown -backend " << backend << nl
-            << "Valid choices: (auto cpu cuda)" << nl << exit(FatalError);
-    }
-    if (!wordList({"double", "single"}).found(precision))
-    {
-        FatalErrorInFunction
-            << "Unknown -precision " << precision << nl
-            << "Valid choices: (double single)" << nl << exit(FatalError);
-    }
-
-    // Before Time reads it: Time misuses some values (a floating-point
-    // exception for writeInterval 0)
-    const controlSettings control =
-        controlSettings::readFile(args.globalPath()/"system"/"controlDict");
-
-    // A time directory a killed run was replacing, back before Time looks
-    // for the latest time
-    restoreReplaced(args.path());
-
-    if (control.startFrom == "latestTime")
-    {
-        removeUnsharedTimes(args.path());
-    }
-
-    #include "createTime.H"
-
-    if (control.endTime < runTime.value())
-    {
-        FatalIOErrorInFunction(runTime.controlDict())
-            << "endTime " << control.endTime << " lies before the start time "
-            << runTime.timeName() << " (startFrom " << control.startFrom
-            << ")." << nl << "Valid values: endTime >= "
-            << runTime.timeName() << nl << exit(FatalIOError);
-    }
-
-    // The block of blockMeshDict, before the mesh is read (a scale beyond
-    // 1e30 writes points the mesh reader refuses without naming it)
-    structuredMesh::readBlockCounts(runTime);
-
-    #include "createMesh.H"
-
-    autoPtr<avalancheCase> acPtr = readCase(runTime, mesh);
-    avalancheCase& ac = acPtr();
-    removeIncompleteWrites(runTime);
-    checkWritable(runTime);
-    runSignals::install();
-
-    // Restarts continue exactly only from states written to full precision
-    if
-    (
-        runTime.writeFormat() == IOstream::ASCII
-     && IOstream::defaultPrecision() < 17
-    )
-    {
-        IOstream::defaultPrecision(17);
-        Info<< "Writing with 17 significant digits so that restarts"
-            << " continue exactly" << nl << endl;
-    }
-
-    if (args.found("ensemble"))
-    {
-        if (precision == "double")
-        {
-            ensembleRun<double>(ac, backend, logInterval).run();
-        }
-        else
-        {
-            ensembleRun<float>(ac, backend, logInterval).run();
-        }
-    }
-    else if (precision == "double")
-    {
-        avalancheRun<double>(ac, backend, logInterval).run();
+        Foam::ensembleRun<Real>(ac, options.backend, options.logInterval).run();
     }
     else
     {
-        avalancheRun<float>(ac, backend, logInterval).run();
+        Foam::avalancheRun<Real>(ac, options.backend, options.logInterval).run();
+    }
+}
+
+
+int main(int argc, char *argv[])
+{
+    // First thing: a signal during start-up ends the run cleanly
+    runSignals::install();
+    runOptions::declare();
+    #include "setRootCase.H"
+    runSignals::install();   // again: argList sets OpenFOAM's own
+    const runOptions options = runOptions::read(args);
+    const controlSettings control = prepareStart(args);
+    endIfSignalled("checking the case's time directories");
+
+    #include "createTime.H"
+    runSignals::install();   // and after Time, whatever it set
+    checkEndTime(runTime, control);
+    // The block of blockMeshDict, before the mesh is read (a scale beyond
+    // 1e30 writes points the mesh reader refuses without naming it)
+    structuredMesh::readBlockCounts(runTime);
+    endIfSignalled("reading the controls");
+
+    #include "createMesh.H"
+    endIfSignalled("reading the mesh");
+
+    autoPtr<avalancheCase> ac = readCase(runTime, mesh);
+    removeIncompleteWrites(runTime);
+    checkWritable(runTime);
+    setWritePrecision(runTime);
+    endIfSignalled("reading the fields");
+
+    if (options.precision == "double")
+    {
+        run<double>(ac(), options);
+    }
+    else
+    {
+        run<float>(ac(), options);
     }
 
     Info<< "End\n" << endl;

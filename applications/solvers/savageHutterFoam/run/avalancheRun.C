@@ -1,0 +1,455 @@
+/*---------------------------------------------------------------------------*\
+  savageHutterFoam: Savage-Hutter granular avalanche solver
+\*---------------------------------------------------------------------------*/
+
+#include "avalancheRun.H"
+#include "anyProcessor.H"
+#include "backendSelection.H"
+#include "runSignals.H"
+#include "startUp.H"
+
+namespace Foam
+{
+
+// * * * * * * * * * * * * * * * * Constructor * * * * * * * * * * * * * * //
+
+template<class Real>
+avalancheRun<Real>::avalancheRun
+(
+    avalancheCase& ac,
+    const word& backend,
+    const scalar logInterval
+)
+:
+    ac_(ac),
+    runTime_(ac.runTime),
+    logInterval_(logInterval),
+    pb_(ac.problem<Real>()),
+    halo_(makeHalo<Real>(ac.smesh)),
+    solver_(selectBackend(backend, pb_, halo_.get())),
+    t0_(runTime_.value()),
+    index0_(runTime_.timeIndex()),
+    endTime_(runTime_.endTime().value()),
+    writeGrid_
+    (
+        IOobject
+        (
+            "writeGrid", runTime_.timeName(), "uniform", runTime_,
+            IOobject::READ_IF_PRESENT, IOobject::AUTO_WRITE
+        )
+    ),
+    origin_(0),
+    nextWrite_(-GREAT),
+    writer_(runTime_),
+    functions_(runTime_.functionObjects()),
+    start_(wallClock::now()),
+    lastLog_(start_),
+    lastWrite_(start_),
+    lastCheck_(start_),
+    written_(1, runTime_.timeName()),
+    lastWritten_(t0_),
+    kineticPeak_(0),
+    steadyDir_
+    (
+        runTime_.globalPath()/"postProcessing"/"steadyState"
+       /runTime_.timeName()
+    ),
+    steady_(false),
+    stopped_(false),
+    stopAtNextWrite_(false),
+    controlDictPath_(runTime_.globalPath()/runTime_.system()/"controlDict"),
+    controlStamp_(highResLastModified(controlDictPath_))
+{
+    // The write times: k writeInterval from the origin of the run that
+    // wrote the start time, so that a restart from a time written on a
+    // signal keeps its grid; else from 0 when the start time lies on that
+    // grid, else from the start time, as in OpenFOAM
+    const scalar w = ac_.input.writeInterval;
+    origin_ = mag(t0_/w - std::round(t0_/w)) < 1e-6 ? 0 : t0_;
+    for (const word& key : writeGrid_.toc())
+    {
+        if (key != "origin")
+        {
+            FatalIOErrorInFunction(writeGrid_)
+                << "Unknown keyword '" << key << "'." << nl
+                << "Valid keywords: (origin)" << nl << exit(FatalIOError);
+        }
+    }
+    if (writeGrid_.found("origin"))
+    {
+        // The start of the run that wrote the start time: not after it,
+        // and not so far before that the grid's k (a count of write
+        // intervals, as the steps to endTime) passes maxStepsToEnd
+        origin_ = writeGrid_.get<scalar>("origin");
+        if (!(origin_ <= t0_ && t0_ - origin_ <= maxStepsToEnd()*w))
+        {
+            FatalIOErrorInFunction(writeGrid_)
+                << "Invalid origin " << origin_ << " of the write times"
+                << " origin + k writeInterval (" << w << "): the start of"
+                << " the run that wrote " << runTime_.timeName() << "." << nl
+                << "Valid values: a time in [" << t0_ - maxStepsToEnd()*w
+                << ", " << t0_ << "]; or remove " << writeGrid_.objectPath()
+                << " (the write times are then counted from "
+                << (mag(t0_/w - std::round(t0_/w)) < 1e-6 ? 0 : t0_) << ")"
+                << nl << exit(FatalIOError);
+        }
+        Info<< "Write times on the grid of the run that wrote "
+            << runTime_.timeName() << ": " << origin_ << " + k " << w << nl;
+    }
+    writeGrid_.set("origin", origin_);
+
+    solver_->setTime(t0_);
+    solver_->setMaxDt(ac_.input.maxDeltaT);
+    solver_->setInterrupt(&runSignals::pending);
+    checkFirstStep();
+
+    Info<< "Backend: " << solver_->name().c_str() << ", "
+        << (sizeof(Real) == 8 ? "double" : "single") << " precision" << nl;
+
+    const sh::Diagnostics d0 = solver_->diagnostics();
+    Info<< "Initial volume " << d0.volume << " m^3, " << d0.wetCells
+        << " wet cells, hMax " << d0.hMax << " m" << nl << nl
+        << "Starting time loop" << nl << endl;
+
+    functions_.start();
+    if (functions_.size())
+    {
+        Info<< "Function objects: " << functions_.size() << ", executed at"
+            << " every write time" << nl << endl;
+    }
+
+    solver_->getState(hPrev_, hus_, hvs_);
+    start_ = lastLog_ = lastWrite_ = lastCheck_ = wallClock::now();
+}
+
+
+// * * * * * * * * * * * * * * * * Stages  * * * * * * * * * * * * * * * * //
+
+template<class Real>
+bool avalancheRun<Real>::advance()
+{
+    sh::Solver<Real>& solver = *solver_;
+    const word& writeControl = ac_.input.writeControl;
+    const scalar w = ac_.input.writeInterval;
+    const double toLog = logInterval_ - secondsSince(lastLog_);
+    const double toCheck = checkInterval() - secondsSince(lastCheck_);
+    bool due = false;
+    if (writeControl == "timeStep")
+    {
+        // With the arithmetic of Solver::advance; a write when the time
+        // index is a multiple of writeInterval, as in Time
+        const label every = max(label(w), label(1));
+        do
+        {
+            double dt = double(solver.stableDt());
+            dt = min(dt, ac_.input.maxDeltaT);
+            const double left = endTime_ - solver.time();
+            const bool last = dt >= left;
+            if (last)
+            {
+                solver.step(Real(left), endTime_);
+            }
+            else
+            {
+                solver.step(Real(dt));
+            }
+            logIfDue();
+        }
+        while
+        (
+            solver.time() < endTime_
+         && (index0_ + solver.steps()) % every != 0
+         && !anyProcessor
+            (
+                runSignals::pending
+             || secondsSince(lastCheck_) >= checkInterval()
+            )
+        );
+        due =
+            !(solver.time() < endTime_)
+         || (index0_ + solver.steps()) % every == 0;
+    }
+    else if (writeControl == "clockTime" || writeControl == "cpuTime")
+    {
+        // Wherever the run is
+        const double toWrite = w - secondsSince(lastWrite_);
+        const bool reached = solver.advance
+        (
+            endTime_, max(min(min(toLog, toWrite), toCheck), 0.0)
+        );
+        logIfDue();
+        due = reached || anyProcessor(secondsSince(lastWrite_) >= w);
+    }
+    else
+    {
+        if (!(nextWrite_ > solver.time()))
+        {
+            nextWrite_ = ac_.nextWriteTime(solver.time(), origin_);
+        }
+        due = solver.advance
+        (
+            min(nextWrite_, endTime_), max(min(toLog, toCheck), 0.0)
+        );
+        logIfDue();
+    }
+    return due;
+}
+
+
+template<class Real>
+void avalancheRun<Real>::write()
+{
+    const double dtWrite = solver_->time() - lastWritten_;
+    solver_->getState(hs_, hus_, hvs_);
+    // Not written on any processor unless good on all (store agrees)
+    if (!ac_.store(hs_, hus_, hvs_, solver_->peakMaps()))
+    {
+        FatalErrorInFunction
+            << "The solution at t = " << solver_->time() << " is not"
+            << " finite or has h < 0; it is not written, and the last"
+            << " written time directory holds the last good state" << nl
+            << exit(FatalError);
+    }
+    timeNames::distinguish(solver_->time(), lastWritten_, written_);
+    runTime_.setTime(solver_->time(), index0_ + solver_->steps());
+    runTime_.setDeltaT(solver_->lastDt(), false);
+    writer_.write();
+    functions_.execute();
+    written_.append(runTime_.timeName());
+    lastWritten_ = solver_->time();
+    lastWrite_ = wallClock::now();
+    if (dtWrite > 0)
+    {
+        steadyCheck(dtWrite);
+    }
+}
+
+
+template<class Real>
+void avalancheRun<Real>::steadyCheck(const double dt)
+{
+    // Dry ground at both times does not dilute the measure
+    const double hDry = ac_.input.model.hDry;
+    double sum2 = 0, maxRate = 0;
+    long nWet = 0;
+    for (std::size_t k = 0; k < hs_.size(); ++k)
+    {
+        if (!(double(hs_[k]) > hDry || double(hPrev_[k]) > hDry))
+        {
+            continue;
+        }
+        const double r = std::fabs(double(hs_[k]) - double(hPrev_[k]))/dt;
+        sum2 += r*r;
+        maxRate = std::max(maxRate, r);
+        ++nWet;
+    }
+    // Over all processors (nothing to reduce in a serial run)
+    reduce(sum2, sumOp<double>());
+    reduce(maxRate, maxOp<double>());
+    reduce(nWet, sumOp<long>());
+    const double rms = nWet ? std::sqrt(sum2/nWet) : 0;
+    hPrev_ = hs_;
+    if (!steadyFile_ && Pstream::master())
+    {
+        mkDir(steadyDir_);
+        steadyFile_.reset(new OFstream(steadyDir_/"dhdt.dat"));
+        steadyFile_->precision(12);
+        *steadyFile_
+            << "# |dh/dt| between consecutive write times [m/s], over"
+            << " the cells wet (h > hDry) at either time" << nl
+            << "# Time    RMS    max    wet cells" << nl;
+    }
+    if (steadyFile_)
+    {
+        *steadyFile_ << solver_->time() << tab << rms << tab << maxRate
+            << tab << nWet << endl;
+    }
+    Info<< "Steady-state check: |dh/dt| over " << nWet << " wet cells:"
+        << " RMS " << rms << ", max " << maxRate << " m/s";
+    const scalar tol = ac_.input.steadyStateTolerance;
+    if (tol > 0 && rms < tol)
+    {
+        steady_ = true;
+        Info<< "; RMS < steadyStateTolerance " << tol << ": steady state"
+            << " reached at t = " << solver_->time();
+    }
+    Info<< nl;
+
+    // The flow's kinetic energy, sum h |u|^2/2 dA (per unit density)
+    const double fraction = ac_.input.kineticEnergyStop;
+    if (fraction > 0)
+    {
+        double energy = 0;
+        for (std::size_t k = 0; k < hs_.size(); ++k)
+        {
+            const double h = hs_[k];
+            if (h > hDry)
+            {
+                const double hu = hus_[k], hv = hvs_[k];
+                energy += 0.5*(hu*hu + hv*hv)/h;
+            }
+        }
+        energy *= ac_.smesh.dx()*ac_.smesh.dy();
+        reduce(energy, sumOp<double>());
+        kineticPeak_ = std::max(kineticPeak_, energy);
+        Info<< "Kinetic energy: " << energy << " m^5/s^2 (per unit density),"
+            << " peak " << kineticPeak_;
+        if (kineticPeak_ > 0 && energy < fraction*kineticPeak_)
+        {
+            steady_ = true;
+            Info<< "; below kineticEnergyStop " << fraction << " of the"
+                << " peak: the flow has stopped at t = " << solver_->time();
+        }
+        Info<< nl;
+    }
+}
+
+
+template<class Real>
+bool avalancheRun<Real>::actOnSignals()
+{
+    runSignals::pending = 0;
+    const bool stop = anyProcessor(runSignals::stop);
+    Info<< nl << runSignals::name(runSignals::last) << " at t = "
+        << solver_->time() << ": writing"
+        << (stop ? " and stopping" : "") << nl << endl;
+    // Wherever the run is, write time or not
+    if (solver_->time() > lastWritten_)
+    {
+        write();
+    }
+    if (stop)
+    {
+        stoppedBy_ = runSignals::name(runSignals::last);
+    }
+    return stop;
+}
+
+
+template<class Real>
+void avalancheRun<Real>::logProgress()
+{
+    const sh::Diagnostics d = solver_->diagnostics();
+    const double t = solver_->time();
+    const double done = (t - t0_)/max(endTime_ - t0_, SMALL);
+    const double wall = secondsSince(start_);
+    // The step the state now allows (the last step taken may have been
+    // shortened to land on a write time)
+    const double dtNow = d.maxRate > 0
+        ? min(ac_.input.maxDeltaT, ac_.input.model.cfl/d.maxRate)
+        : solver_->lastDt();
+    Info<< "Time = " << t << " (" << label(100*done) << "%)"
+        << "  deltaT = " << dtNow
+        << "  Co = " << dtNow*d.maxRate
+        << "  volume = " << d.volume
+        << "  wet = " << d.wetCells
+        << "  moving = " << d.movingCells
+        << "  speedBounds = " << std::to_string(d.speedClips).c_str()
+        << "  steps = " << solver_->steps()
+        << "  ETA "
+        << (done > 1e-9 ? hms(wall*(1 - done)/done) : std::string("-")).c_str()
+        << endl;
+    if (!std::isfinite(d.volume))
+    {
+        FatalErrorInFunction
+            << "The solution is no longer finite at t = " << t
+            << "; nothing more is written" << nl << exit(FatalError);
+    }
+    lastLog_ = wallClock::now();
+}
+
+
+template<class Real>
+void avalancheRun<Real>::logIfDue()
+{
+    if (anyProcessor(secondsSince(lastLog_) >= logInterval_))
+    {
+        logProgress();
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * The run * * * * * * * * * * * * * * * * //
+
+template<class Real>
+void avalancheRun<Real>::run()
+{
+    // A signal while the backend started (GPU initialisation, the
+    // first step's checks): nothing is written
+    endIfSignalled("starting the backend");
+    while (solver_->time() < endTime_ && !steady_ && !stopped_)
+    {
+        const wallClock::time_point stepStart = wallClock::now();
+        const bool due = advance();
+        steppingSeconds_ += secondsSince(stepStart);
+        if (anyProcessor(runSignals::pending))
+        {
+            stopped_ = actOnSignals();
+            continue;
+        }
+        if (due)
+        {
+            write();
+            if (stopAtNextWrite_)
+            {
+                stoppedBy_ = "stopAt nextWrite";
+                stopped_ = true;
+                continue;
+            }
+        }
+        if (due || anyProcessor(secondsSince(lastCheck_) >= checkInterval()))
+        {
+            stopped_ = readControlIfModified();
+        }
+    }
+
+    functions_.end();
+    if (stopped_)
+    {
+        Info<< nl << "Stopped by " << stoppedBy_.c_str() << " at t = "
+            << solver_->time();
+        if (stoppedBy_ == "stopAt noWriteNow")
+        {
+            Info<< ", not written (the last time directory: "
+                << runTime_.timeName() << ")" << nl;
+        }
+        else
+        {
+            Info<< ", written to " << runTime_.timeName()
+                << " (restart: startFrom latestTime)" << nl;
+        }
+    }
+
+    const double wall = secondsSince(start_);
+    if (solver_->steps() > 0)
+    {
+        logProgress();
+    }
+    // All processors' cells
+    const double cells = returnReduce(double(pb_.nCells()), sumOp<double>());
+    const double updates = cells*double(solver_->steps());
+    Info<< nl << "Time loop: " << solver_->steps() << " steps on "
+        << std::to_string((long long)(cells)).c_str() << " cells in "
+        << wall << " s wall ("
+        << solver_->name().c_str()
+        << (Pstream::parRun()
+          ? " on each of " + std::to_string(Pstream::nProcs())
+          + " processors" : std::string()).c_str()
+        << ")" << nl
+        << "Cell updates per second: "
+        << (wall > 0 ? updates/wall : 0.0) << nl
+        << "Stepping: "
+        << (steppingSeconds_ > 0 ? updates/steppingSeconds_ : 0.0)
+        << " cell updates per second (" << steppingSeconds_
+        << " s wall stepping, without writing)" << nl
+        << "Thin cells whose speed was bounded (speedBounds, scheme.H): "
+        << std::to_string(solver_->diagnostics().speedClips).c_str()
+        << nl << endl;
+}
+
+// * * * * * * * * * * * * * * Instantiations  * * * * * * * * * * * * * * //
+
+template class avalancheRun<float>;
+template class avalancheRun<double>;
+
+} // End namespace Foam

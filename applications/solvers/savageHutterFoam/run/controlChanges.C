@@ -1,0 +1,176 @@
+/*---------------------------------------------------------------------------*\
+  savageHutterFoam: Savage-Hutter granular avalanche solver
+
+Description
+    A controlDict changed during a run (runTimeModifiable yes): endTime,
+    writeControl, writeInterval and stopAt act from the next step; an
+    invalid one is reported and the run goes on as before.
+\*---------------------------------------------------------------------------*/
+
+#include "avalancheRun.H"
+#include "anyProcessor.H"
+#include "controlSettings.H"
+#include "OStringStream.H"
+
+namespace Foam
+{
+
+template<class Real>
+bool avalancheRun<Real>::readControlIfModified()
+{
+    lastCheck_ = wallClock::now();
+    const double stamp = highResLastModified(controlDictPath_);
+    if
+    (
+        !anyProcessor
+        (
+            ac_.input.control.runTimeModifiable && stamp != controlStamp_
+        )
+    )
+    {
+        return false;
+    }
+    controlStamp_ = stamp;
+    controlSettings c;
+    const bool ioThrows = FatalIOError.throwExceptions();
+    const bool throws = FatalError.throwExceptions();
+    bool valid = true;
+    try
+    {
+        c = controlSettings::readFile(controlDictPath_, true);
+    }
+    catch (const error& e)
+    {
+        valid = false;
+        Warning
+            << nl << "controlDict changed at t = " << solver_->time()
+            << " but is invalid; the run goes on as before:" << nl
+            << e.message().c_str() << nl << "file: "
+            << controlDictPath_ << nl << endl;
+    }
+    FatalIOError.throwExceptions(ioThrows);
+    FatalError.throwExceptions(throws);
+    // Decomposed: every processor read the same file (one edited between
+    // their reads is read again at the next look)
+    if (Pstream::parRun())
+    {
+        valid = !anyProcessor(!valid);
+        // Every setting the run acts on, as numbers
+        const wordList controls
+        ({
+            "timeStep", "runTime", "adjustableRunTime", "clockTime",
+            "cpuTime", "endTime", "writeNow", "noWriteNow", "nextWrite"
+        });
+        const auto differs = [](const scalar x)
+        {
+            return returnReduce(x, minOp<scalar>())
+                != returnReduce(x, maxOp<scalar>());
+        };
+        if
+        (
+            valid
+         && (
+                differs(c.endTime) || differs(c.writeInterval)
+             || differs(controls.find(c.writeControl))
+             || differs(controls.find(c.stopAt))
+             || differs(c.runTimeModifiable)
+            )
+        )
+        {
+            controlStamp_ = -1;
+            return false;
+        }
+    }
+    if (valid)
+    {
+        // The new endTime and writes from here, at the steps of the start
+        const double t = solver_->time();
+        const bool onGrid =
+            c.writeControl == "adjustableRunTime"
+         || c.writeControl == "runTime";
+        const std::string why = stepsProblem
+        (
+            t, c.endTime, c.writeControl, c.writeInterval,
+            onGrid ? t + c.writeInterval : c.endTime
+        );
+        if (!why.empty())
+        {
+            valid = false;
+            Warning
+                << nl << "controlDict changed at t = " << t << " but is"
+                << " invalid; the run goes on as before:" << nl
+                << why.c_str() << nl << "file: " << controlDictPath_ << nl
+                << endl;
+        }
+    }
+    if (!valid)
+    {
+        return false;
+    }
+
+    controlSettings& now = ac_.input.control;
+    Info<< nl << "controlDict changed at t = " << solver_->time() << ":";
+    if (c.endTime != endTime_)
+    {
+        Info<< " endTime " << endTime_ << " -> " << c.endTime << ";";
+        endTime_ = c.endTime;
+        runTime_.setEndTime(endTime_);
+    }
+    if
+    (
+        c.writeControl != ac_.input.writeControl
+     || c.writeInterval != ac_.input.writeInterval
+    )
+    {
+        Info<< " writeControl " << c.writeControl << ", writeInterval "
+            << ac_.input.writeInterval << " -> " << c.writeInterval << ";";
+        ac_.input.writeControl = c.writeControl;
+        ac_.input.writeInterval = c.writeInterval;
+        nextWrite_ = -GREAT;
+    }
+    if (c.stopAt != now.stopAt)
+    {
+        Info<< " stopAt " << c.stopAt << ";";
+    }
+    if
+    (
+        c.deltaT != now.deltaT || c.maxCo != now.maxCo
+     || c.maxDeltaT != now.maxDeltaT
+     || c.adjustTimeStep != now.adjustTimeStep
+     || c.purgeWrite != now.purgeWrite
+    )
+    {
+        Info<< " (deltaT, maxCo, maxDeltaT, adjustTimeStep and"
+            << " purgeWrite are read at the next start)";
+    }
+    Info<< nl << endl;
+    now.endTime = c.endTime;
+    now.writeControl = c.writeControl;
+    now.writeInterval = c.writeInterval;
+    now.stopAt = c.stopAt;
+    now.runTimeModifiable = c.runTimeModifiable;
+
+    stopAtNextWrite_ = c.stopAt == "nextWrite";
+    if (c.stopAt == "noWriteNow")
+    {
+        stoppedBy_ = "stopAt noWriteNow";
+        return true;
+    }
+    if (c.stopAt == "writeNow" || !(solver_->time() < endTime_))
+    {
+        stoppedBy_ = c.stopAt == "writeNow" ? "stopAt writeNow" : "endTime";
+        if (solver_->time() > lastWritten_)
+        {
+            write();
+        }
+        return true;
+    }
+    return false;
+}
+
+// * * * * * * * * * * * * * * Instantiations  * * * * * * * * * * * * * * //
+
+template bool avalancheRun<float>::readControlIfModified();
+template bool avalancheRun<double>::readControlIfModified();
+
+} // End namespace Foam
