@@ -1244,7 +1244,7 @@ else
     fail "foamToVTK failed (see $full/log.foamToVTK)"
 fi
 
-# -- Hazard maps pMax and tArrival (issue 14) -----------------------------------
+# -- Hazard maps pMax and tArrival ----------------------------------------------
 # In the restart run above (rho 1500, arrivalThreshold 0.01 m): tArrival -1
 # exactly where hMax <= 0.01, set once (the same at every later time), not
 # after its time; pMax = rho UMax^2 to round-off; dimensions Pa and s

@@ -231,7 +231,7 @@ prepare granularJet granularJet 256 128 1 0.25 \
 compare granularJet double
 compare granularJet single
 
-# -ensemble (issue 15): the ensemble tutorial (12 members: delta x two
+# -ensemble: the ensemble tutorial (12 members: delta x two
 # releases) with -backend cpu and -backend cuda, every file under ensemble/
 # (members, statistics, report.dat) byte for byte, in both precisions
 ens="$work/ensemble/base"

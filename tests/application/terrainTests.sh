@@ -3,7 +3,7 @@
 # savageHutterFoam: Savage-Hutter granular avalanche solver
 #
 # Description
-#     Tests of terrainToCase and hazardMaps (issue 14) on synthetic DEMs
+#     Tests of terrainToCase and hazardMaps on synthetic DEMs
 #     (240 x 160 m, 2 m pixels, written here as .asc and, through
 #     gdal_translate, .tif):
 #       - a DEM that is exactly a 35 deg plane: zeta = 35 deg at every point
