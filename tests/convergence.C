@@ -15,7 +15,7 @@
         u  = uc(t) + (x - xc(t)) G'(t)/G(t)
         xc = xc0 + uc0 t + a t^2/2,   uc = uc0 + a t,
         H G = M = H0 G0,   G'' = 2 beta M/G^2
-     solves eqs (1)-(2) in the dimensional form of design.md section 2
+     solves eqs (1)-(2) in the dimensional form of docs/design.md section 2
      (zb = 0, kappa = 0): xi is constant along particle paths, so
      Dh/Dt + h du/dx = (1 - xi^2)(H' + H G'/G) = 0, and
      Du/Dt + beta dh/dx = xc'' + xi (G'' - 2 beta H/G) = a, the source
@@ -109,7 +109,7 @@ double cellMean
 // * * * * * * * * * * * * The spreading parabolic cap  * * * * * * * * * * //
 
 //- Savage & Hutter (1989) similarity solution on a constant slope, in the
-//  dimensional form of design.md section 2 (zb = 0, kappa = 0, v = 0):
+//  dimensional form of docs/design.md section 2 (zb = 0, kappa = 0, v = 0):
 //      h  = H(t) (1 - xi^2),  xi = (x - xc(t))/G(t),  |xi| <= 1
 //      u  = uc(t) + (x - xc(t)) G'(t)/G(t)
 //      xc' = uc,  uc' = a = g (sin zeta - tan delta cos zeta)
