@@ -823,7 +823,7 @@ else
 fi
 
 # The stop modes, with writeInterval 50 (no regular write time within the
-# test, about 0.06 s of simulated time per second here): writeNow writes
+# test: the live case advances far slower than that): writeNow writes
 # the state where the change is seen, off the write grid, and ends the run;
 # noWriteNow ends it writing nothing; nextWrite (writeInterval 0.5 there)
 # runs on and ends at the first write time after the change; an endTime

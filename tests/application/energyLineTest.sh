@@ -16,7 +16,7 @@
 #     left the mesh and the run ended at rest.  Then the same chute with
 #     Voellmy's friction must end by kineticEnergyStop (the flow's kinetic
 #     energy below 1 % of its peak), log that energy as the fields' own,
-#     and run no film away (filmCheck.py).  About 4 s.
+#     and run no film away (filmCheck.py).
 #     Prints one line per check and "N passed, M failed, K skipped".
 #
 # Usage

@@ -25,7 +25,8 @@
 #     times float's own distance from double (tests/gpuCompare.C bounds by
 #     the spread of a one-ulp perturbation instead, which needs a run this
 #     script cannot make; there the factor 8 is argued).  On these cases
-#     the two distances are of the same size (measured: ratio 0.9-1.1).
+#     the two distances are of the same size (measured on them:
+#     docs/performance.md).
 #     The same figures for hU are printed, not checked: near rest (the pile
 #     at its last time) the remaining momentum is round-off, and its relative
 #     distances are O(1) whatever the backend.  Prints the cell-update
