@@ -42,10 +42,11 @@
     magnitude over the run: docs/performance.md).  Why 8: an approximate
     division errs by up to 2 ulp and a square root by about 1, against 0.5
     for IEEE rounding, so 4 times larger perturbations, and a factor 2 for
-    their being fed at every step rather than once.  Why 1e-6 (17 ulp of float, relative, in
-    the rms): in the smooth dam break errors add up step by step without
-    growth, and e_ulp stays near one ulp.  Where the reference momentum is
-    zero (the pile at rest), the GPU's must be exactly zero too.
+    their being fed at every step rather than once.  Why 1e-6 (17 ulp of
+    float, relative, in the rms): in the smooth dam break errors add up
+    step by step without growth, and e_ulp stays near one ulp.  Where the
+    reference momentum is zero (the pile at rest), the GPU's must be
+    exactly zero too.
     The distance of the CPU's float run from its double run, e_fd, is
     printed for information; it is not the reference: in the inclined
     plane it is large, and e_ulp is of the same size (docs/performance.md):

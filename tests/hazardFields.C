@@ -33,8 +33,9 @@
        arrivalThreshold): within 5 cells of the exact position of that
        depth at tArrival, (2 c0 - 3 sqrt(g a)) tArrival (the numerical
        front lags it by a few cells, the same along the way, the distance
-       in metres halving with the cells: checked), for a = 1e-4 m printed (the thinnest
-       layer of the numerical front lags more, converging slowly).
+       in metres halving with the cells: checked), for a = 1e-4 m printed
+       (the thinnest layer of the numerical front lags more, converging
+       slowly).
 \*---------------------------------------------------------------------------*/
 
 #include "testing.H"

@@ -9,8 +9,9 @@
        shoreline  the bed the bowl of section 5.2, zb = r/2, so the lake
                   ends at r = 0.6 m and the bed beyond is dry.
      max |v| over the wet cells must stay at round-off (1e-12 m/s).  With
-     the static resistance on (the default) K = 1 at rest, the paper's rule, so with
-     activePassive too: with K != 1 a flat lake is no rest state.
+     the static resistance on (the default) K = 1 at rest, the paper's
+     rule, so with activePassive too: with K != 1 a flat lake is no rest
+     state.
      And a rest state with a varying reference surface: a uniform layer
      (h = 0.3 m) on the profile of eq. (35) with zeta0 = 20 deg and
      delta = 25 deg, plus a Gaussian bump, 60 x 28 cells, walls, t = 2 s:

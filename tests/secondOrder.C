@@ -42,15 +42,14 @@
      log2(e(N)/e(2N)).  Asserted: L1 order >= 1.8 of h and hu on the
      finest pair, every limiter, but minmod in b): there minmod stays
      short of second order up to 6400 cells, where vanLeer and MC reach it
-     (docs/numerics.md).  The cause is minmod's
-     choice of one side's difference: where the velocity is nearly linear
-     (the accelerating flow downstream of the bend) its choice flips from
-     cell to cell with the smallest changes of the state, the faces'
-     O(dx^2) errors stop being smooth, and the solution at a fixed mesh
-     does not converge in dt (its differences between maxCo 0.4, 0.2, 0.1
-     and 0.05 shrink far more slowly than vanLeer's).  Asserted for minmod
-     there: >= 1.4, above the orders of a reconstruction that ignores K
-     (docs/numerics.md).
+     (docs/numerics.md).  The cause is minmod's choice of one side's
+     difference: where the velocity is nearly linear (the accelerating
+     flow downstream of the bend) its choice flips from cell to cell with
+     the smallest changes of the state, the faces' O(dx^2) errors stop
+     being smooth, and the solution at a fixed mesh does not converge in
+     dt (its differences between maxCo 0.4, 0.2, 0.1 and 0.05 stall, where
+     vanLeer's fall as dt^2).  Asserted for minmod there: >= 1.4, above
+     the orders of a reconstruction that ignores K (docs/numerics.md).
 \*---------------------------------------------------------------------------*/
 
 #include "testing.H"
