@@ -232,8 +232,8 @@ prepare granularJet granularJet 256 128 1 0.25 \
 compare granularJet double
 compare granularJet single
 
-# -ensemble: the ensemble tutorial (12 members: delta x two
-# releases) with -backend cpu and -backend cuda, every file under ensemble/
+# -ensemble: the ensemble tutorial (12 members: delta x two releases)
+# with -backend cpu and -backend cuda, every file under ensemble/
 # (members, statistics, report.dat) byte for byte, in both precisions
 ens="$work/ensemble/base"
 mkdir -p "$ens"
