@@ -2,16 +2,16 @@
   savageHutterFoam: Savage-Hutter granular avalanche solver
 
 Description
-    Speed of an ensemble (issue 15, item 5): N variants of the section 5.3
-    inclined plane (tests/ensembleCases.H inclinedPlaneMembers: delta,
-    phi, the friction law and its coefficients, the initial thickness)
-    on k x k x (30 x 14) cells, from t = 0 to tEnd, run as one ensemble
-    (batched: makeCudaEnsemble, all members in the same kernels; or
-    makeCpuEnsemble) against the same members run one after the other as
-    single runs (makeCudaSolver; CpuSolver with OpenMP).  The issue's
-    target: 1000 members on 120 x 56 cells (k = 4) at least 50 times
-    faster batched than one after the other on one H200; also 100 members
-    on 480 x 224 (k = 16).
+    Speed of an ensemble: N variants of the section 5.3 inclined plane
+    (tests/ensembleCases.H inclinedPlaneMembers: delta, phi, the friction
+    law and its coefficients, the initial thickness) on k x k x (30 x 14)
+    cells, from t = 0 to tEnd, run as one ensemble (batched:
+    makeCudaEnsemble, all members in the same kernels; or makeCpuEnsemble)
+    against the same members run one after the other as single runs
+    (makeCudaSolver; CpuSolver with OpenMP).  The ensembles' target: 1000
+    members on 120 x 56 cells (k = 4) at least 50 times faster batched
+    than one after the other on one H200; also 100 members on 480 x 224
+    (k = 16).
 
     Sequential runs take long (each single run of a small mesh is bound by
     the launches, not the GPU): -sequential S runs S of the members, spread

@@ -2,8 +2,8 @@
   savageHutterFoam: Savage-Hutter granular avalanche solver
 
 Description
-    Decomposed runs (issue 12), the rate of a fully wet flow over MPI ranks:
-    the peers' dam break of design.md section 4 (1.0 | 0.5 m at x = Lx/2,
+    Decomposed runs, the rate of a fully wet flow over MPI ranks: the
+    peers' dam break of docs/design.md section 4 (1.0 | 0.5 m at x = Lx/2,
     flat bed, 1 m cells, walls, g = 9.81, no friction, K = 1), each rank a
     rectangle of a px x py split (parallel/halo.H splitGrid), its Problem
     built on its own as the application builds it.  One rank runs the

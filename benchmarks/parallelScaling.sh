@@ -5,7 +5,7 @@
 # Description
 #     The scaling tables of decomposed runs (docs/performance.md), run by
 #     tests/gpuCheck stage 3b on the GPU machine: benchmarks/
-#     parallelBenchmark on the wet dam break of design.md section 4,
+#     parallelBenchmark on the wet dam break of docs/design.md section 4,
 #       - GPU, double and float: strong scaling of 4320 x 2016 cells (the
 #         8.7M of the single-GPU tables) on 1 and 2 ranks (2x1); weak
 #         scaling, 4320 x 2016 cells per rank, 2 ranks split 2x1 and 1x2.

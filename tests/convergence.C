@@ -1,5 +1,5 @@
 /*---------------------------------------------------------------------------*\
-  Observed orders of convergence (issue 10, item 9)
+  Observed orders of convergence
 
   Errors are L1 norms sum |e_i| dx against the exact cell averages (Simpson
   on the pieces between kinks: exact for h and hu, piecewise cubics), the
@@ -15,7 +15,7 @@
         u  = uc(t) + (x - xc(t)) G'(t)/G(t)
         xc = xc0 + uc0 t + a t^2/2,   uc = uc0 + a t,
         H G = M = H0 G0,   G'' = 2 beta M/G^2
-     solves eqs (1)-(2) in the dimensional form of design.md section 2
+     solves eqs (1)-(2) in the dimensional form of docs/design.md section 2
      (zb = 0, kappa = 0): xi is constant along particle paths, so
      Dh/Dt + h du/dx = (1 - xi^2)(H' + H G'/G) = 0, and
      Du/Dt + beta dh/dx = xc'' + xi (G'' - 2 beta H/G) = a, the source
@@ -33,8 +33,8 @@
      dt) (printed, about 0.92) by t = 1, so the core is outside the domain
      of dependence of the fronts and the solution there is smooth: the
      scheme's order must show.  Asserted: L1 order >= 1.8 of h and of hu
-     in the core on the finest pair of meshes, for every limiter (item 9
-     makes no exception for the default).  The whole line is printed.
+     in the core on the finest pair of meshes, for every limiter (the
+     default, minmod, included).  The whole line is printed.
 
   2. The dam break of section 5.1 (h0 = 10 m, zeta = 40, delta = 24.5 deg,
      K = 1, t = 0.5 s, x in [-12.8, 12.8]; exact solution (33), testing.H)
@@ -55,14 +55,13 @@
         smooth part on the finest pair, every limiter.  The whole line
         (kinks included) is printed.
 
-  On the scheme of 2026-11-30 (MUSCL on the conservative variables):
-  vanLeer and MC reach 2.1-2.2 (cap) and 2.0 (dam break from t0); minmod
-  only 1.0-1.4, with grid-scale noise in the cells the maximum of hu has
-  swept through (the momentum maximum moves through the material when the
-  flow accelerates, and every limiter clips at it); limiting u instead of
-  hu gave 2.00 with every limiter in an experiment.  The Riemann start
-  gives 1.0 with every limiter.  Runtime: about 9 s of one core (serial
-  runs; 14 s wall on a shared two-core machine).
+  With MUSCL on the conservative variables (vanLeer and MC second order)
+  minmod fell short of second order, with grid-scale noise in the cells
+  the maximum of hu has swept through (the momentum maximum moves through
+  the material when the flow accelerates, and every limiter clips at it);
+  limiting u instead of hu (physics/reconstruction.H slopesOf) gives
+  second order with every limiter.  The Riemann start converges at first
+  order with every limiter.  The orders measured are in docs/numerics.md.
 \*---------------------------------------------------------------------------*/
 
 #include "testing.H"
@@ -110,7 +109,7 @@ double cellMean
 // * * * * * * * * * * * * The spreading parabolic cap  * * * * * * * * * * //
 
 //- Savage & Hutter (1989) similarity solution on a constant slope, in the
-//  dimensional form of design.md section 2 (zb = 0, kappa = 0, v = 0):
+//  dimensional form of docs/design.md section 2 (zb = 0, kappa = 0, v = 0):
 //      h  = H(t) (1 - xi^2),  xi = (x - xc(t))/G(t),  |xi| <= 1
 //      u  = uc(t) + (x - xc(t)) G'(t)/G(t)
 //      xc' = uc,  uc' = a = g (sin zeta - tan delta cos zeta)

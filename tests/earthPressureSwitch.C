@@ -13,29 +13,30 @@
                 phi = 35, delta = 25 deg (Ky switches);
        y, d=p   the same with delta = phi = 30 deg (only Ky switches).
      TV(u) = sum |u_{i+1} - u_i| over the line must stay within 10 % of
-     its value at 200 cells (a chattering switch turned it into grid-scale
-     noise: 12 -> 24 from 200 -> 400 cells; the isotropic run is printed
-     beside it).  Printed too: max |u_{i+1} - 2 u_i + u_{i-1}|, about
-     1e-3 and falling as dx^2 where the solution is smooth, 0.1-0.6 where
-     the switch chatters.
+     its value at 200 cells (a chattering switch turns it into grid-scale
+     noise that grows with the mesh, docs/numerics.md; the isotropic run
+     is printed beside it).  Printed too: max |u_{i+1} - 2 u_i + u_{i-1}|,
+     which falls as dx^2 where the solution is smooth and stays large
+     where the switch chatters.
   2. A nearly symmetric collapse.  The cone of section 5.2 in its bowl
      (zb = r/2, h = max(0, 0.2 - r)), delta = phi = 20 deg, 96 x 96 cells
      on [-0.3, 0.3]^2, walls, t = 4 s, with cell centres computed in
      floating point (x = x0 + (i + 1/2) dx), so the input is mirror-
      symmetric only to ~1e-16.  The largest |h - its mirror image| (in x
      and in y) at the end:
-       activePassive  at most 1e-10 (a switch that chatters amplified the
-                      input's round-off 10^13-fold, to 7e-4 m);
+       activePassive  at most 1e-10 (a switch that chatters amplifies the
+                      input's round-off by many orders of magnitude,
+                      docs/numerics.md);
        isotropic      printed, with the bound the README states: the
                       stopping criterion's rest/motion decision (eq. 26)
                       is a threshold, so a cell on one side may stop a
                       step before its mirror image and the deposit keeps
-                      the difference; measured 1.6e-6 m (3.9e-7 m before
-                      the changes of issue 23: which cell stops first
-                      depends on every digit of the scheme), asserted at
-                      most 1e-5 m, the bound the README states (six
-                      times the measured value, a margin for that
-                      dependence; the active/passive bound is 1e-10).
+                      the difference, and which cell stops first depends
+                      on every digit of the scheme; asserted at most
+                      1e-5 m, the bound the README states: a margin above
+                      the difference measured on this case
+                      (docs/numerics.md) for that dependence (the
+                      active/passive bound is 1e-10).
 \*---------------------------------------------------------------------------*/
 
 #include "testing.H"

@@ -1,5 +1,5 @@
 /*---------------------------------------------------------------------------*\
-  Ensembles on the CUDA backend (cuda/cudaEnsembleImpl.H, issue 15)
+  Ensembles on the CUDA backend (cuda/cudaEnsembleImpl.H)
 
     Members of tests/ensembleCases.H (the section 5.3 inclined plane with
     delta, phi, the friction law and its coefficients and the initial

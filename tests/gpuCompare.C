@@ -38,23 +38,21 @@
     Why e_ulp: the GPU's approximate operations are ulp-sized
     perturbations fed into the flow at every step; e_ulp is what the flow
     makes of such a perturbation, including the growth that the
-    active/passive switch of the inclined plane gives it (from ~1e-7 at
-    t = 3 to ~1e-3 at t = 24).  Why 8: an approximate division errs by up
-    to 2 ulp and a square root by about 1, against 0.5 for IEEE rounding, so
-    4 times larger perturbations, and a factor 2 for their being fed at
-    every step rather than once.  Why 1e-6 (17 ulp of float, relative, in
-    the rms): in the smooth dam break errors add up step by step without
-    growth, and e_ulp stays near one ulp.  Where the reference momentum is
-    zero (the pile at rest), the GPU's must be exactly zero too.
+    active/passive switch of the inclined plane gives it (by orders of
+    magnitude over the run: docs/performance.md).  Why 8: an approximate
+    division errs by up to 2 ulp and a square root by about 1, against 0.5
+    for IEEE rounding, so 4 times larger perturbations, and a factor 2 for
+    their being fed at every step rather than once.  Why 1e-6 (17 ulp of
+    float, relative, in the rms): in the smooth dam break errors add up
+    step by step without growth, and e_ulp stays near one ulp.  Where the
+    reference momentum is zero (the pile at rest), the GPU's must be
+    exactly zero too.
     The distance of the CPU's float run from its double run, e_fd, is
     printed for information; it is not the reference: in the inclined
-    plane it is ~1e-3 from t = 1 on.  Before the active/passive switch was
-    regularised that came from decisions that differed between the
-    precisions while e_ulp stayed ~1e-7; since (2026-11-30, H200) e_ulp is
-    of the same size as e_fd (7e-4 and 6e-4 at t = 6, 2e-4 and 3e-4 at
-    t = 24): the flow, its stopping criterion and the steep but continuous
-    switch amplify any perturbation alike, so a bound on e_fd could not
-    catch an error below 1e-3.
+    plane it is large, and e_ulp is of the same size (docs/performance.md):
+    the flow, its stopping criterion and the steep but continuous switch
+    amplify any perturbation alike, so a bound on e_fd could not catch an
+    error below that size.
     Further float checks: the step count within 1 % (+1) of the CPU's (dt
     depends on the rounded wave speeds), output times hit exactly, stableDt
     within 1e-6 relative (a few ulp), the volume within the bound of h; wet

@@ -31,10 +31,11 @@
        x = 2 c0 t in the limit a -> 0.  tArrival of the cells from x = 0.2 m
        to where a arrives at 0.8 t, for a = 1e-2 m (the default
        arrivalThreshold): within 5 cells of the exact position of that
-       depth at tArrival, (2 c0 - 3 sqrt(g a)) tArrival (measured: 3-4
-       cells late, the same along the way, the distance in metres halving
-       with the cells: checked), for a = 1e-4 m printed (the thinnest
-       layer of the numerical front lags more, converging slowly).
+       depth at tArrival, (2 c0 - 3 sqrt(g a)) tArrival (the numerical
+       front lags it by a few cells, the same along the way, the distance
+       in metres halving with the cells: checked), for a = 1e-4 m printed
+       (the thinnest layer of the numerical front lags more, converging
+       slowly).
 \*---------------------------------------------------------------------------*/
 
 #include "testing.H"

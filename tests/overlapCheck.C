@@ -1,6 +1,6 @@
 /*---------------------------------------------------------------------------*\
-  The cut of the CUDA backend's launch grids on a subdomain (cuda/overlap.H,
-  issue 12): the interior computed while the halos travel, the frame after.
+  The cut of the CUDA backend's launch grids on a subdomain (cuda/overlap.H):
+  the interior computed while the halos travel, the frame after.
   Host code, checked without a GPU.
 
     For every part of the splits 1x1, 2x1, 1x2, 2x2, 3x1, 3x3 of grids from

@@ -1,5 +1,5 @@
 /*---------------------------------------------------------------------------*\
-  Decomposed CPU runs against the whole run, bit for bit (issue 12)
+  Decomposed CPU runs against the whole run, bit for bit
 
     Usage: mpiexec -np P parallelCpu px py          (P = px py)
 

@@ -1,5 +1,5 @@
 /*---------------------------------------------------------------------------*\
-  Decomposed CUDA runs against the whole run, bit for bit (issue 12)
+  Decomposed CUDA runs against the whole run, bit for bit
 
     Usage: mpiexec -np P parallelGpu px py          (P = px py)
 

@@ -1,5 +1,5 @@
 /*---------------------------------------------------------------------------*\
-  The decomposition of a grid, without MPI (parallel/halo.H, issue 12)
+  The decomposition of a grid, without MPI (parallel/halo.H)
 
     splitGrid
       - refuses a split that leaves a part narrower than the Grid::ng = 2

@@ -40,18 +40,16 @@
      the characteristics from the open sides travel at u +- c) and the same
      for hu, on N = 400 ... 6400 (a) and 200 ... 3200 (b); order =
      log2(e(N)/e(2N)).  Asserted: L1 order >= 1.8 of h and hu on the
-     finest pair, every limiter, but minmod in b): there minmod stays at
-     1.45-1.6 up to 6400 cells (measured), where vanLeer and MC reach 2.0.
-     The cause is minmod's choice of one side's difference: where the
-     velocity is nearly linear (the accelerating flow downstream of the
-     bend) its choice flips from cell to cell with the smallest changes of
-     the state, the faces' O(dx^2) errors stop being smooth, and the
-     solution at a fixed mesh does not converge in dt (differences 2.8e-5,
-     8.4e-6, 6.0e-6 between maxCo 0.4, 0.2, 0.1, 0.05 at N = 1600, against
-     5.0e-6, 1.3e-6, 3.3e-7 with vanLeer).  Asserted for minmod there:
-     >= 1.4 (the reconstruction that ignored K: 1.06 and 0.94).
-     (Before, minmod reached 1.2 and 0.8 in a) and vanLeer and MC 1.5-1.65
-     in b), from the bed's reconstruction with K and the two sides' betas.)
+     finest pair, every limiter, but minmod in b): there minmod stays
+     short of second order up to 6400 cells, where vanLeer and MC reach it
+     (docs/numerics.md).  The cause is minmod's choice of one side's
+     difference: where the velocity is nearly linear (the accelerating
+     flow downstream of the bend) its choice flips from cell to cell with
+     the smallest changes of the state, the faces' O(dx^2) errors stop
+     being smooth, and the solution at a fixed mesh does not converge in
+     dt (its differences between maxCo 0.4, 0.2, 0.1 and 0.05 stall, where
+     vanLeer's fall as dt^2).  Asserted for minmod there: >= 1.4, above
+     the orders of a reconstruction that ignores K (docs/numerics.md).
 \*---------------------------------------------------------------------------*/
 
 #include "testing.H"

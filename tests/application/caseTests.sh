@@ -823,7 +823,7 @@ else
 fi
 
 # The stop modes, with writeInterval 50 (no regular write time within the
-# test, about 0.06 s of simulated time per second here): writeNow writes
+# test: the live case advances far slower than that): writeNow writes
 # the state where the change is seen, off the write grid, and ends the run;
 # noWriteNow ends it writing nothing; nextWrite (writeInterval 0.5 there)
 # runs on and ends at the first write time after the change; an endTime
@@ -1244,7 +1244,7 @@ else
     fail "foamToVTK failed (see $full/log.foamToVTK)"
 fi
 
-# -- Hazard maps pMax and tArrival (issue 14) -----------------------------------
+# -- Hazard maps pMax and tArrival ----------------------------------------------
 # In the restart run above (rho 1500, arrivalThreshold 0.01 m): tArrival -1
 # exactly where hMax <= 0.01, set once (the same at every later time), not
 # after its time; pMax = rho UMax^2 to round-off; dimensions Pa and s

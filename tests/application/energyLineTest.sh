@@ -3,9 +3,9 @@
 # savageHutterFoam: Savage-Hutter granular avalanche solver
 #
 # Description
-#     The energy line (issue 14, item 7): a Coulomb slide with lambda = 0
-#     (friction mu g cos(zeta), whose work is mu g times the horizontal
-#     distance travelled) on a concave chute stops with its centre of mass
+#     The energy line: a Coulomb slide with lambda = 0 (friction
+#     mu g cos(zeta), whose work is mu g times the horizontal distance
+#     travelled) on a concave chute stops with its centre of mass
 #     on the line of slope tan(delta) from where it started, so hazardMaps'
 #     comTravelAngle is delta.  The chute is a DEM this test writes: its
 #     slope falls linearly from 35 deg at the top to 5 deg 600 m down, then
@@ -16,7 +16,7 @@
 #     left the mesh and the run ended at rest.  Then the same chute with
 #     Voellmy's friction must end by kineticEnergyStop (the flow's kinetic
 #     energy below 1 % of its peak), log that energy as the fields' own,
-#     and run no film away (filmCheck.py).  About 4 s.
+#     and run no film away (filmCheck.py).
 #     Prints one line per check and "N passed, M failed, K skipped".
 #
 # Usage

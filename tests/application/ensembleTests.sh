@@ -3,8 +3,8 @@
 # savageHutterFoam: Savage-Hutter granular avalanche solver
 #
 # Description
-#     savageHutterFoam -ensemble (issue 15) on a small copy of the ensemble
-#     tutorial (the inclined plane of section 5.3 on 60 x 28 cells, t = 2):
+#     savageHutterFoam -ensemble on a small copy of the ensemble tutorial
+#     (the inclined plane of section 5.3 on 60 x 28 cells, t = 2):
 #       - member exactness: two members picked at random (the seed is
 #         printed) run as single cases with their parameters (delta in
 #         transportProperties, their release as 0/h, hScale applied by

@@ -101,7 +101,8 @@ project="$1"
 work="$2"
 . "$project/tests/application/testFunctions.sh"
 
-# A variant that runs longer than this is BAD (the base case takes 0.2 s)
+# A variant that runs longer than this is BAD (far longer than the base case
+# takes)
 limit=20
 export OMP_NUM_THREADS=1
 

@@ -25,7 +25,8 @@
 #     times float's own distance from double (tests/gpuCompare.C bounds by
 #     the spread of a one-ulp perturbation instead, which needs a run this
 #     script cannot make; there the factor 8 is argued).  On these cases
-#     the two distances are of the same size (measured: ratio 0.9-1.1).
+#     the two distances are of the same size (measured on them:
+#     docs/performance.md).
 #     The same figures for hU are printed, not checked: near rest (the pile
 #     at its last time) the remaining momentum is round-off, and its relative
 #     distances are O(1) whatever the backend.  Prints the cell-update
@@ -231,8 +232,8 @@ prepare granularJet granularJet 256 128 1 0.25 \
 compare granularJet double
 compare granularJet single
 
-# -ensemble (issue 15): the ensemble tutorial (12 members: delta x two
-# releases) with -backend cpu and -backend cuda, every file under ensemble/
+# -ensemble: the ensemble tutorial (12 members: delta x two releases)
+# with -backend cpu and -backend cuda, every file under ensemble/
 # (members, statistics, report.dat) byte for byte, in both precisions
 ens="$work/ensemble/base"
 mkdir -p "$ens"

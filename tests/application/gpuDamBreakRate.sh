@@ -3,8 +3,8 @@
 # savageHutterFoam: Savage-Hutter granular avalanche solver
 #
 # Description
-#     The application's speed on the peers' common case (design.md section
-#     4): a dam break 1.0 | 0.5 m at x = Lx/2 on a flat bed, 1 m cells,
+#     The application's speed on the peers' common case (docs/design.md
+#     section 4): a dam break 1.0 | 0.5 m at x = Lx/2 on a flat bed, 1 m cells,
 #     walls on all sides, fully wet, t = 0...30 s, on 2048 x 2048 and
 #     4096 x 2048 cells, run with -backend cuda in double and single
 #     precision (called by tests/gpuCheck with the bundle of

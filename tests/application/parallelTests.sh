@@ -3,9 +3,9 @@
 # savageHutterFoam: Savage-Hutter granular avalanche solver
 #
 # Description
-#     Decomposed runs the OpenFOAM way (issue 12), on CPU ranks, against
-#     the serial run of the same case: a copy of the damBreak tutorial on
-#     48 x 12 cells with an inflow side (xMin), a transmissive side (xMax),
+#     Decomposed runs the OpenFOAM way, on CPU ranks, against the serial
+#     run of the same case: a copy of the damBreak tutorial on 48 x 12
+#     cells with an inflow side (xMin), a transmissive side (xMax),
 #     walls (y), a dam break and a cap off the centre line (so that cuts in
 #     x and y both carry flow), rho for pMax, the arrival map, written with
 #     writePrecision 17 (decomposePar and reconstructPar write fields with

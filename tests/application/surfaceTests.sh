@@ -3,8 +3,8 @@
 # savageHutterFoam: Savage-Hutter granular avalanche solver
 #
 # Description
-#     Tests of avalancheSurface (issue 14, item 5: the bed and the flow
-#     surface at their world positions as .vtp files with a .series):
+#     Tests of avalancheSurface (the bed and the flow surface at their
+#     world positions as .vtp files with a .series):
 #       - a terrain case from a DEM that is exactly a plane, 35 deg down X
 #         and 10 deg up Y (so zb is not zero), through terrainToCase and a
 #         short run: every bed point lies on the DEM's plane (1e-9 m); the

@@ -3,7 +3,7 @@
 # savageHutterFoam: Savage-Hutter granular avalanche solver
 #
 # Description
-#     Tests of terrainToCase and hazardMaps (issue 14) on synthetic DEMs
+#     Tests of terrainToCase and hazardMaps on synthetic DEMs
 #     (240 x 160 m, 2 m pixels, written here as .asc and, through
 #     gdal_translate, .tif):
 #       - a DEM that is exactly a 35 deg plane: zeta = 35 deg at every point
@@ -40,7 +40,7 @@
 #         warning;
 #       - coordinate reference systems, on the plane moved into UTM zone 32N
 #         (EPSG:32632): the release as a shapefile in EPSG:4326 gives the
-#         0/h of the polygon in the DEM's coordinates (1e-6 m; 4e-10 seen),
+#         0/h of the polygon in the DEM's coordinates (1e-6 m),
 #         without .prj the same with a warning, a .prj on a DEM without one
 #         a warning; a release raster in EPSG:4326 (2e-6 deg pixels) the
 #         analytic volume within one cell area x thickness;

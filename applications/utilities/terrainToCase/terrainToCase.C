@@ -6,7 +6,7 @@ Application
 
 Description
     Makes a savageHutterFoam case from a digital elevation model and
-    release areas, as system/terrainDict describes them (design.md,
+    release areas, as system/terrainDict describes them (docs/design.md
     section 5):
 
         dem             "constant/dem.tif";   // .asc or .tif, elevation [m]

@@ -15,8 +15,9 @@ Description
     instruction sequence with a slow-path branch, an approximate one a
     reciprocal and a multiplication.  The float state then differs from
     the CPU's float state by round-off; tests/gpuCompare.C states and
-    checks the tolerance.  Since the divisions were cut (issue 11) the
-    approximate build gains little (docs/performance.md).
+    checks the tolerance.  Since the kernels divide little (the
+    reciprocals of dx and dy formed once, one reciprocal of h per cell and
+    stage) the approximate build gains little (docs/performance.md).
 \*---------------------------------------------------------------------------*/
 
 #include "cudaEnsembleImpl.H"
