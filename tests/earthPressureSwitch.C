@@ -27,13 +27,13 @@
        activePassive  at most 1e-10 (a switch that chatters amplifies the
                       input's round-off by many orders of magnitude,
                       docs/numerics.md);
-       isotropic      printed, with the bound the README states: the
+       isotropic      printed, with the bound docs/userGuide.md states: the
                       stopping criterion's rest/motion decision (eq. 26)
                       is a threshold, so a cell on one side may stop a
                       step before its mirror image and the deposit keeps
                       the difference, and which cell stops first depends
                       on every digit of the scheme; asserted at most
-                      1e-5 m, the bound the README states: a margin above
+                      1e-5 m, the bound docs/userGuide.md states: a margin above
                       the difference measured on this case
                       (docs/numerics.md) for that dependence (the
                       active/passive bound is 1e-10).

@@ -36,7 +36,7 @@ Usage
     savageHutterFoam [-backend auto|cpu|cuda] [-precision double|single]
                      [-logInterval seconds] [-parallel] [-ensemble]
 
-    -ensemble: the members of system/ensembleDict (design.md section 6)
+    -ensemble: the members of system/ensembleDict (docs/design.md section 6)
     run together, each written under ensemble/member<k>/, the statistics
     across members under ensemble/statistics/ (run/ensembleRun.H).
 

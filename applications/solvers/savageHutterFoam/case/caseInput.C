@@ -151,7 +151,8 @@ caseInput::caseInput(const fvMesh& mesh)
         readChoice(tp, "earthPressure", sh::earthPressureNames())
     );
     model.phiDeg = tp.get<scalar>("phi");
-    // rho: only for the peak pressure of the hazard maps (design.md 5)
+    // rho: only for the peak pressure of the hazard maps (docs/design.md,
+    // section 5)
     if (tp.found("rho"))
     {
         const scalar rho = tp.get<scalar>("rho");

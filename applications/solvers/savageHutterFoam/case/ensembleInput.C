@@ -62,7 +62,7 @@ ensembleInput::ensembleInput(const Time& runTime, const caseInput& input)
             << "        \"CoulombCoeffs/delta\"  (20 22 24);" << nl
             << "        hScale                 (0.5 1 2);" << nl
             << "    }" << nl << "    combine product;   // or list" << nl
-            << "(design.md section 6)" << nl << exit(FatalError);
+            << "(docs/design.md section 6)" << nl << exit(FatalError);
     }
     const IOdictionary dict
     (
