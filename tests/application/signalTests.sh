@@ -33,6 +33,9 @@
 #         two renames (<case>/.savageHutterFoam-writing/<time>.replaced,
 #         <time> missing) is moved back, with a warning, before the start
 #         time is chosen: startFrom latestTime starts from it.
+#       - SIGTERM while the mesh is read, SIGINT while the fields are
+#         (1024 x 512 cells, start-up takes seconds): the run ends after
+#         that stage with a message and exit status 0, writing nothing.
 #     Prints one line per check and "N passed, M failed, K skipped".
 #
 # Usage
@@ -166,6 +169,40 @@ then
 else
     fail "SIGINT: the stop directory, its peak maps or the |dh/dt| report are wrong (see $d)"
 fi
+
+# -- A signal during start-up -------------------------------------------------
+# On 1024 x 512 cells start-up takes seconds (reading the mesh, the fields,
+# the backend); a SIGTERM while the mesh is read, a SIGINT while the fields
+# are: the run ends after that stage with a message, exit status 0, and
+# writes nothing (no time directory, no staging directory, no report)
+d="$work/startUp"
+makeCase "$d" 1024 512 || { cat "$d.setup.log"; fail "start-up: set-up failed"; }
+setEntry "$d/system/controlDict" endTime 1
+before="$(cd "$d" && find . | sort)"
+for how in "TERM:^Create mesh for time:reading the mesh" \
+           "INT:^Reading field h:reading the fields"
+do
+    sig="${how%%:*}"
+    rest="${how#*:}"
+    at="${rest%%:*}"
+    stage="${rest#*:}"
+    log="$d/log.startUp.$sig"
+    (cd "$d" && exec savageHutterFoam -backend cpu > "log.startUp.$sig" 2>&1) &
+    pid=$!
+    waitFor "$log" "$at" 120
+    kill -"$sig" "$pid"
+    wait "$pid"
+    rc=$?
+    after="$(cd "$d" && find . ! -name 'log.*' | sort)"
+    if [ $rc -eq 0 ] && grep -q "^SIG$sig during start-up ($stage): the run ends before its first step; nothing written" "$log" \
+    && ! grep -q "^Starting time loop" "$log" \
+    && [ "$after" = "$(echo "$before" | grep -v '/log\.')" ]
+    then
+        pass "SIG$sig during start-up ($stage, on 1024 x 512 cells): the run ended with a message, exit 0, nothing written"
+    else
+        fail "SIG$sig during start-up: rc $rc, message or files wrong (see $log; files now: $(echo "$after" | tr '\n' ' ' | cut -c1-300))"
+    fi
+done
 
 # -- A second SIGINT while the state is being written --------------------------
 d="$work/secondSignal"
