@@ -17,6 +17,9 @@
 #     regime, hMax, UMax) must be the same byte for byte (as
 #     tests/application/caseTests.sh checks on the CPU: no write time
 #     before the end in either run, so that both take the same steps).
+#     A SIGTERM 3 s after the start (the mesh being read) and a SIGINT as
+#     the GPU is set up end the run before its first step with a message,
+#     exit 0, writing nothing.
 #     Prints how long each signal took to be acted on, and the comparison.
 #
 # Usage
@@ -161,6 +164,41 @@ else
     fail "SIGINT: exit $rc after $took s, stop '$stop', last directory '$last', report's last row '$lastRow'"
     tail -n 20 log.savageHutterFoam
 fi
+
+# A signal during start-up (reading 2M cells, the GPU's initialisation):
+# SIGTERM 3 s after the start, SIGINT as the GPU line appears (the backend
+# then being set up); each ends the run before its first step with a
+# message, exit 0, nothing written
+setEntry system/controlDict startFrom startTime
+for how in "TERM:" "INT:^GPU: "
+do
+    sig="${how%%:*}"
+    at="${how#*:}"
+    had="$(timeDirs | tr '\n' ' ')"
+    savageHutterFoam -backend cuda > log.startUp.$sig 2>&1 &
+    pid=$!
+    if [ -z "$at" ]
+    then
+        sleep 3
+    else
+        for _ in $(seq 1 600); do
+            grep -q "$at" log.startUp.$sig 2>/dev/null && break
+            sleep 0.01
+        done
+    fi
+    kill -"$sig" "$pid"
+    wait "$pid"
+    rc=$?
+    stage="$(sed -n "s/^SIG$sig during start-up (\(.*\)): the run ends before its first step; nothing written$/\1/p" log.startUp.$sig)"
+    if [ $rc -eq 0 ] && [ -n "$stage" ] && [ "$(timeDirs | tr '\n' ' ')" = "$had" ] \
+    && ! grep -q "^Starting time loop" log.startUp.$sig
+    then
+        pass "SIG$sig during start-up ($stage): ended with the message, exit 0, nothing written"
+    else
+        fail "SIG$sig during start-up: exit $rc, stage '$stage', time directories '$had' -> '$(timeDirs | tr '\n' ' ')'"
+        tail -n 20 log.startUp.$sig
+    fi
+done
 
 [ $status -eq 0 ] && echo "gpuSignalCheck: OK" || echo "gpuSignalCheck: FAILED"
 exit $status
