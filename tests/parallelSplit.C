@@ -30,7 +30,7 @@
 #include "parallelCases.H"
 #include "testing.H"
 
-#include "parallel/halo.H"
+#include "host/decomposition.H"
 
 #include <cstring>
 #include <stdexcept>

@@ -60,6 +60,10 @@ avalancheRun<Real>::avalancheRun
     controlDictPath_(runTime_.globalPath()/runTime_.system()/"controlDict"),
     controlStamp_(highResLastModified(controlDictPath_))
 {
+    // A signal while the backend was set up (the GPU's initialisation):
+    // nothing is written
+    endIfSignalled("setting up the backend");
+
     // The write times: k writeInterval from the origin of the run that
     // wrote the start time, so that a restart from a time written on a
     // signal keeps its grid; else from 0 when the start time lies on that
@@ -374,9 +378,6 @@ void avalancheRun<Real>::logIfDue()
 template<class Real>
 void avalancheRun<Real>::run()
 {
-    // A signal while the backend started (GPU initialisation, the
-    // first step's checks): nothing is written
-    endIfSignalled("starting the backend");
     while (solver_->time() < endTime_ && !steady_ && !stopped_)
     {
         const wallClock::time_point stepStart = wallClock::now();

@@ -606,6 +606,7 @@ ensembleRun<Real>::ensembleRun
 
     // The backend
     solver_ = selectEnsembleBackend<Real>(backend, problems_);
+    endIfSignalled("setting up the backend");
     solver_->setMaxDt(ac_.input.maxDeltaT);
     solver_->setInterrupt(&runSignals::pending);
     Info<< "Ensemble of " << n_ << " members on "
@@ -656,9 +657,6 @@ ensembleRun<Real>::ensembleRun
 template<class Real>
 void ensembleRun<Real>::run()
 {
-    // A signal while the backend started (GPU initialisation, the
-    // first step's checks): nothing is written
-    endIfSignalled("starting the backend");
     using clock = std::chrono::steady_clock;
     const clock::time_point start = clock::now();
     const scalar endTime = runTime_.endTime().value();
