@@ -3,7 +3,7 @@
 
 Description
     Speed of an ensemble: N variants of the section 5.3 inclined plane
-    (tests/ensembleCases.H inclinedPlaneMembers: delta, phi, the friction
+    (tests/common/ensembleCases.H inclinedPlaneMembers: delta, phi, the friction
     law and its coefficients, the initial thickness) on k x k x (30 x 14)
     cells, from t = 0 to tEnd, run as one ensemble (batched:
     makeCudaEnsemble, all members in the same kernels; or makeCpuEnsemble)
@@ -78,7 +78,7 @@ struct Options
     std::string out;
 };
 
-//- Whether member m is bit for bit its single run (tests/ensembleCompare.H)
+//- Whether member m is bit for bit its single run (tests/common/ensembleCompare.H)
 template<class Real>
 bool sameRun(EnsembleSolver<Real>& e, int m, Solver<Real>& s)
 {

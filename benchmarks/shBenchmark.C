@@ -3,7 +3,7 @@
 
 Description
     Performance of the backends on the inclined plane of section 5.3
-    (tests/gpuCases.H), in double and float:
+    (tests/common/gpuCases.H), in double and float:
       - the meshes of Table IV, k x k x (30 x 14), k = 4, 8, 16, 32, from
         t = 0 to t = 24, against the paper's GPU times (Table IV, 1D) and
         specific times (Table V);

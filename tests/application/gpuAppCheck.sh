@@ -22,7 +22,7 @@
 #                                           + 1e-6
 #     must hold for h (relRMS(a - b) = ||a - b||_2 / ||b||_2 over the
 #     cells): the GPU in single no farther from the CPU in single than 8
-#     times float's own distance from double (tests/gpuCompare.C bounds by
+#     times float's own distance from double (tests/backends/gpuCompare.C bounds by
 #     the spread of a one-ulp perturbation instead, which needs a run this
 #     script cannot make; there the factor 8 is argued).  On these cases
 #     the two distances are of the same size (measured on them:

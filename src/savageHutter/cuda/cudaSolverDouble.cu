@@ -8,7 +8,7 @@ Description
 
     Compiled with IEEE correctly rounded division and square root (nvcc's
     default) and --fmad=false (CMakeLists.txt), like the CPU backend, so
-    that the two give bit-identical states (tests/gpuCompare.C).
+    that the two give bit-identical states (tests/backends/gpuCompare.C).
 \*---------------------------------------------------------------------------*/
 
 #include "cudaEnsembleImpl.H"

@@ -14,7 +14,7 @@ Description
     -prec-sqrt=false): an IEEE-rounded float division is a multi-
     instruction sequence with a slow-path branch, an approximate one a
     reciprocal and a multiplication.  The float state then differs from
-    the CPU's float state by round-off; tests/gpuCompare.C states and
+    the CPU's float state by round-off; tests/backends/gpuCompare.C states and
     checks the tolerance.  Since the kernels divide little (the
     reciprocals of dx and dy formed once, one reciprocal of h per cell and
     stage) the approximate build gains little (docs/performance.md).

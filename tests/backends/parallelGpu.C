@@ -5,17 +5,17 @@
 
     Each rank takes a GPU, the node-local rank (MPI_Comm_split_type
     SHARED) mod the node's devices, so that 4 ranks share 1 or 2 GPUs, and
-    runs its subdomain of each case of tests/parallelCases.H on it,
+    runs its subdomain of each case of tests/common/parallelCases.H on it,
         makeCudaSolver<Real>(subProblem(whole, splitGrid(nx, ny, px, py, r)),
                              &halo)
-    as tests/parallelCompare.H describes (to the end time through
+    as tests/common/parallelCompare.H describes (to the end time through
     advance(), which keeps the clock on the device, first stopped by rank
     0's wall budget; or 40 steps beyond the CFL limit through step()).
     Rank 0 compares the parts bit for bit with the serial run of the whole
     problem:
       double  the CPU backend, CpuSolver<double>(whole, false): the
               reference, which the serial CUDA run equals bit for bit
-              (tests/gpuCompare.C)
+              (tests/backends/gpuCompare.C)
       float   the CUDA backend, makeCudaSolver<float>(whole): both runs
               execute the same device code on the same inputs, so they
               agree bit for bit in every build, with SH_CUDA_FLOAT_APPROX

@@ -3,12 +3,12 @@
 
     Usage: mpiexec -np P parallelCpu px py          (P = px py)
 
-    The MPI transport first (tests/mpiHaloCheck.H): exchange of ghost
+    The MPI transport first (tests/common/mpiHaloCheck.H): exchange of ghost
     layers checked against a function of the whole-grid index, the
     reductions, and the refusal of subdomains that do not fit together.
 
-    Then the cases of tests/parallelCases.H, each in double and in float,
-    as tests/parallelCompare.H describes: each rank runs its subdomain
+    Then the cases of tests/common/parallelCases.H, each in double and in float,
+    as tests/common/parallelCompare.H describes: each rank runs its subdomain
         CpuSolver<Real>(subProblem(whole, splitGrid(nx, ny, px, py, r)),
                         false, &halo)
     and rank 0 compares the parts, bit for bit, with the serial run

@@ -14,7 +14,7 @@
         fills);
       - exactly one part leads (does the once-per-step work);
       - without a processor side the interior is the whole grid.
-    For the 200 x 72 grid of tests/parallelCases.H wideSlope, every part of
+    For the 200 x 72 grid of tests/common/parallelCases.H wideSlope, every part of
     the splits the decomposed tests use (2x1, 1x2, 2x2, 3x1) has a
     non-empty interior with the default tiles, for the cells and for the
     faces: tests parallelGpu_* do run the overlap.  The table printed

@@ -1,14 +1,14 @@
 /*---------------------------------------------------------------------------*\
   Ensembles on the CPU backend (ensemble/ensembleSolver.H)
 
-    Members of tests/ensembleCases.H (the section 5.3 inclined plane with
+    Members of tests/common/ensembleCases.H (the section 5.3 inclined plane with
     delta, phi, the friction law and its coefficients and the initial
     thickness varied), advanced together to t = 1.5, 3 and 6 (the second
     leg first stopped by a spent wall budget, then continued), against
     single runs of each member's problem advanced to the same end times
     (CpuSolver): h, hu, hv, hMax, speed, pressure, arrival, the time,
     steps and last dt, the diagnostics and speed clips, bit for bit
-    (tests/ensembleCompare.H).  Members are picked at random
+    (tests/common/ensembleCompare.H).  Members are picked at random
     (the seed is printed), always with the first and the last; both ways
     the CPU backend runs (OpenMP over members when there are at least as
     many members as threads; else member after member), double and float.

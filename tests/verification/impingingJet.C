@@ -1,6 +1,6 @@
 /*---------------------------------------------------------------------------*\
   The impinging-jet source (physics/impingingJet.H) on the granular jet of
-  section 5.4 (tests/gpuCases.H granularJet, 128 x 64 cells, 3.125 mm):
+  section 5.4 (tests/common/gpuCases.H granularJet, 128 x 64 cells, 3.125 mm):
 
     - inside R_imp every cell holds the analytic state (37)-(38), computed
       here independently from the printed equations (relative 1e-14), at

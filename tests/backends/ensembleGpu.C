@@ -1,7 +1,7 @@
 /*---------------------------------------------------------------------------*\
   Ensembles on the CUDA backend (cuda/cudaEnsembleImpl.H)
 
-    Members of tests/ensembleCases.H (the section 5.3 inclined plane with
+    Members of tests/common/ensembleCases.H (the section 5.3 inclined plane with
     delta, phi, the friction law and its coefficients and the initial
     thickness varied), advanced together in the same kernels to t = 1.5,
     6 and 12 (the second leg with maxDt 0.02, ensemble and singles alike,

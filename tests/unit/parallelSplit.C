@@ -11,7 +11,7 @@
         each neighbour is the part across that side, and names this one
         across the opposite side; the whole grid's sides have none.
     subProblem, for every part of a 2x2 and a 3x1 split of the cases of
-    tests/parallelCases.H (double and float)
+    tests/common/parallelCases.H (double and float)
       - cell centres xc, yc the whole grid's to the bit;
       - zeta, kappa, zb, h, hu, hv the whole problem's cells;
       - BCType::processor on the processor sides (no inflow state), the
