@@ -23,13 +23,20 @@
 #     The precision and backend reach savageHutterFoam through a wrapper
 #     first on PATH (the Allrun scripts call it by name): it adds
 #     -precision and -backend to every call.
+#
+#     -solverOnly: for a machine with the solver but without the tools
+#     around it (the GPU machine's bundle of bin/bundleOpenFOAM: no
+#     postProcess, avalancheSurface, hazardMaps or Python's numpy): these
+#     and each tutorial's plot are replaced by stubs that do nothing, so
+#     only what the solver and setAvalancheFields write is compared; such
+#     a run compares with a manifest recorded with -solverOnly too.
 #     Prints one line per tutorial and precision and "N passed, M failed,
 #     K skipped".
 #
 # Usage
 #     sameResults.sh <project dir> <work dir> <manifest> [-record]
 #                    [-backend cpu|cuda] [-precision double|single]
-#                    [tutorial ...]
+#                    [-solverOnly] [tutorial ...]
 #------------------------------------------------------------------------------
 project="$1"
 work="$2"
@@ -41,6 +48,7 @@ export OMP_NUM_THREADS=${OMP_NUM_THREADS:-2}
 unset SH_FOAM_ARGS
 
 record=false
+solverOnly=false
 backend=cpu
 precisions="double single"
 tutorials=()
@@ -48,6 +56,7 @@ while [ $# -gt 0 ]
 do
     case "$1" in
         -record) record=true ;;
+        -solverOnly) solverOnly=true ;;
         -backend) backend="$2"; shift ;;
         -precision) precisions="$2"; shift ;;
         -*) echo "sameResults.sh: unknown option $1" >&2; exit 2 ;;
@@ -98,12 +107,24 @@ do
 exec "$solver" "\$@" -precision $precision -backend $backend
 EOF
     chmod +x "$wrapper/savageHutterFoam"
+    if $solverOnly
+    then
+        for tool in postProcess avalancheSurface hazardMaps
+        do
+            printf '#!/bin/sh\nexit 0\n' > "$wrapper/$tool"
+            chmod +x "$wrapper/$tool"
+        done
+    fi
     for t in "${tutorials[@]}"
     do
         dir="$work/$precision/$t"
         mkdir -p "$work/$precision"
         cp -r "$project/tutorials/$t" "$dir"
         (cd "$dir" && ./Allclean > /dev/null 2>&1)
+        if $solverOnly
+        then
+            printf '#!/bin/sh\nexit 0\n' > "$dir/plot"
+        fi
         allrunLog="$work/$precision.$t.Allrun.log"
         if ! (cd "$dir" && PATH="$wrapper:$PATH" SH_SHORT=1 ./Allrun \
             > "$allrunLog" 2>&1)
