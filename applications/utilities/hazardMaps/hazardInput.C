@@ -1,0 +1,317 @@
+/*---------------------------------------------------------------------------*\
+  savageHutterFoam: Savage-Hutter granular avalanche solver
+\*---------------------------------------------------------------------------*/
+
+#include "hazardInput.H"
+#include "timeSelector.H"
+#include "IOdictionary.H"
+#include "vector2D.H"
+
+namespace Foam
+{
+
+IOobject fieldIO(const fvMesh& mesh, const word& instance, const word& name)
+{
+    return IOobject
+    (
+        name, instance, mesh, IOobject::MUST_READ, IOobject::NO_WRITE
+    );
+}
+
+
+bool hasField(const fvMesh& mesh, const word& instance, const word& name)
+{
+    return fieldIO(mesh, instance, name).typeHeaderOk<volScalarField>(true);
+}
+
+
+namespace
+{
+
+//- Which fields a time directory lacks for the maps ("" if none)
+word missingFields(const fvMesh& mesh, const word& t, const bool hasRho)
+{
+    word missing;
+    for (const word& name : {"hMax", "UMax", "h"})
+    {
+        if (!hasField(mesh, t, name))
+        {
+            missing += " " + name;
+        }
+    }
+    if (!hasRho && !hasField(mesh, t, "pMax"))
+    {
+        missing += " pMax";
+    }
+    return missing;
+}
+
+
+//- FatalError for the fields time t lacks
+void missingFieldsError
+(
+    const fvMesh& mesh, const word& t, const word& missing,
+    const densityInput& density
+)
+{
+    FatalErrorInFunction
+        << "No field" << missing << " in " << mesh.time().path()/t
+        << " (hMax, UMax and tArrival are written by savageHutterFoam,"
+        << " pMax when constant/transportProperties has rho)" << nl;
+    if (missing.find("pMax") != std::string::npos)
+    {
+        FatalError
+            << "The peak pressure map needs the field pMax or rho [kg/m^3]"
+            << " in " << density.file << " (then pMax = rho UMax^2)"
+            << nl;
+    }
+    FatalError << "Nothing written." << nl << exit(FatalError);
+}
+
+
+//- The numeric time directories (times() also lists constant)
+instantList numericTimes(const Time& runTime)
+{
+    instantList numeric;
+    for (const instant& t : runTime.times())
+    {
+        if (t.name() != runTime.constant())
+        {
+            numeric.append(t);
+        }
+    }
+    if (numeric.empty())
+    {
+        FatalErrorInFunction
+            << "No time directory in " << runTime.path() << nl
+            << exit(FatalError);
+    }
+    return numeric;
+}
+
+} // End anonymous namespace
+
+
+void declareOptions()
+{
+    argList::addNote
+    (
+        "Hazard maps (hMax, UMax, pMax, deposit, tArrival) of a terrain case"
+        " as rasters on the DEM's grid, and a runout report, for each chosen"
+        " time (default: the latest)"
+    );
+    timeSelector::addOptions(false, false);
+    argList::addOption
+    (
+        "threshold", "scalar",
+        "hMax [m] above which a cell belongs to the flow (default 0.01)"
+    );
+    argList::addBoolOption
+    (
+        "statistics",
+        "rasters of an ensemble's statistics (ensemble/statistics/<time>/)"
+        " instead of a run's hazard maps"
+    );
+    argList::noParallel();
+    argList::noFunctionObjects();
+}
+
+
+scalar readThreshold(const argList& args)
+{
+    const scalar threshold = args.getOrDefault<scalar>("threshold", 0.01);
+    if (!(threshold >= 0) || !(threshold < 1e30))
+    {
+        FatalErrorInFunction
+            << "-threshold " << threshold << ": must be finite and >= 0"
+            << nl << exit(FatalError);
+    }
+    return threshold;
+}
+
+
+fileName statisticsDir(const argList& args)
+{
+    return args.path()/"ensemble"/"statistics";
+}
+
+
+word statisticsTime(const argList& args)
+{
+    const fileName statsDir = statisticsDir(args);
+    word statsTime;
+    scalar best = -GREAT;
+    const word wanted = args.getOrDefault<word>("time", word::null);
+    scalar wantedValue = 0;
+    const bool numeric = !wanted.empty() && readScalar(wanted, wantedValue);
+    for (const instant& i : TimePaths::findTimes(statsDir))
+    {
+        if
+        (
+            wanted.empty() ? i.value() > best
+          : (i.name() == wanted || (numeric && i.equal(wantedValue)))
+        )
+        {
+            best = i.value();
+            statsTime = i.name();
+        }
+    }
+    if (statsTime.empty())
+    {
+        FatalErrorInFunction
+            << "-statistics: no time directory"
+            << (wanted.empty() ? "" : " " + wanted) << " in " << statsDir
+            << " (written by savageHutterFoam -ensemble)" << nl
+            << "Nothing written." << nl << exit(FatalError);
+    }
+    return statsTime;
+}
+
+
+hazardTimes selectTimes
+(
+    const Time& runTime, const argList& args, bool statistics
+)
+{
+    hazardTimes times;
+    times.numeric = numericTimes(runTime);
+    if (!statistics && (args.found("time") || args.found("latestTime")))
+    {
+        for
+        (
+            const instant& t
+          : timeSelector::select(runTime.times(), args, runTime.constant())
+        )
+        {
+            if (t.name() != runTime.constant())
+            {
+                times.chosen.append(t);
+            }
+        }
+    }
+    else
+    {
+        times.chosen.append(times.numeric.last());
+    }
+    if (times.chosen.empty())
+    {
+        FatalErrorInFunction
+            << "No time selected in " << runTime.path() << "; times: "
+            << flatOutput(times.numeric) << nl << exit(FatalError);
+    }
+    times.first = times.numeric.first().name();
+    Info<< "Times " << flatOutput(times.chosen) << " (release from time "
+        << times.first << ")" << nl << endl;
+    return times;
+}
+
+
+hazardTerrain readTerrain(const Time& runTime, const fvMesh& mesh)
+{
+    const IOdictionary mapDict
+    (
+        IOobject
+        (
+            "terrainMapping", runTime.constant(), runTime,
+            IOobject::MUST_READ, IOobject::NO_WRITE
+        )
+    );
+    const List<vector2D> table = mapDict.get<List<vector2D>>("inclination");
+    std::vector<double> xT, zT;
+    for (const vector2D& p : table)
+    {
+        xT.push_back(p.x());
+        zT.push_back(p.y());
+    }
+    const vector o = mapDict.get<vector>("origin");
+    const vector2D t = mapDict.get<vector2D>("tangent");
+    hazardTerrain ht;
+    ht.surface = terrain::referenceSurface
+    (
+        {o.x(), o.y(), o.z()}, t.x(), t.y(), xT, zT
+    );
+    ht.cellSize = mapDict.get<scalar>("cellSize");
+    ht.nx = mapDict.get<label>("nx");
+    ht.ny = mapDict.get<label>("ny");
+    ht.yMin = mapDict.get<scalar>("yMin");
+    if (mesh.nCells() != ht.nx*ht.ny)
+    {
+        FatalIOErrorInFunction(mapDict)
+            << "nx " << ht.nx << " x ny " << ht.ny << " cells, but the mesh"
+            << " has " << mesh.nCells() << ": run blockMesh after"
+            << " terrainToCase" << nl << exit(FatalIOError);
+    }
+    fileName demFile = mapDict.get<fileName>("dem");
+    demFile.expand();
+    if (!demFile.isAbsolute())
+    {
+        demFile = runTime.path()/demFile;
+    }
+    try
+    {
+        ht.dem = terrain::readRaster(demFile);
+    }
+    catch (const terrain::gdalError& e)
+    {
+        FatalIOErrorInFunction(mapDict)
+            << "keyword 'dem': " << e.what() << nl << exit(FatalIOError);
+    }
+    return ht;
+}
+
+
+densityInput readDensity(const Time& runTime)
+{
+    const IOdictionary tp
+    (
+        IOobject
+        (
+            "transportProperties", runTime.constant(), runTime,
+            IOobject::MUST_READ, IOobject::NO_WRITE
+        )
+    );
+    densityInput d;
+    d.hasRho = tp.found("rho");
+    d.rho = tp.getOrDefault<scalar>("rho", 0);
+    d.file = tp.objectPath();
+    if (d.hasRho && (!(d.rho > 0) || !(d.rho < 1e30)))
+    {
+        FatalIOErrorInFunction(tp)
+            << "keyword 'rho' = " << d.rho << ": must be > 0" << nl
+            << exit(FatalIOError);
+    }
+    return d;
+}
+
+
+void checkTimes
+(
+    const fvMesh& mesh, const hazardTimes& times, const volScalarField& h0,
+    const densityInput& density, scalar threshold, bool statistics
+)
+{
+    if (!statistics && !(gMax(h0.primitiveField()) > 0))
+    {
+        FatalErrorInFunction
+            << "No release: h = 0 at the first time, " << times.first << nl
+            << exit(FatalError);
+    }
+    for (const instant& ti : statistics ? instantList() : times.chosen)
+    {
+        const word missing = missingFields(mesh, ti.name(), density.hasRho);
+        if (!missing.empty())
+        {
+            missingFieldsError(mesh, ti.name(), missing, density);
+        }
+        const volScalarField hMax(fieldIO(mesh, ti.name(), "hMax"), mesh);
+        if (!(gMax(hMax.primitiveField()) > threshold))
+        {
+            FatalErrorInFunction
+                << "No cell has hMax above the threshold " << threshold
+                << " m at time " << ti.name() << " (-threshold)." << nl
+                << "Nothing written." << nl << exit(FatalError);
+        }
+    }
+}
+
+} // End namespace Foam

@@ -1,0 +1,241 @@
+/*---------------------------------------------------------------------------*\
+  savageHutterFoam: Savage-Hutter granular avalanche solver
+\*---------------------------------------------------------------------------*/
+
+#include "hazardRasters.H"
+#include "OSspecific.H"
+#include "PtrList.H"
+
+namespace Foam
+{
+
+namespace
+{
+
+//- A raster on the DEM's grid from the value of each pixel's cell where
+//  `keep` says so, nodata (-9999) elsewhere, written as .asc and .tif (a
+//  rotated DEM's grid as GeoTIFF alone: ESRI ASCII is north-up)
+template<class Keep>
+void writeMap
+(
+    const fileName& base,
+    const terrain::Raster& dem,
+    const labelList& pixelCell,
+    const scalarField& f,
+    const Keep& keep
+)
+{
+    terrain::Raster r;
+    r.nx = dem.nx;
+    r.ny = dem.ny;
+    r.gt = dem.gt;
+    r.wkt = dem.wkt;
+    r.hasNodata = true;
+    r.nodata = -9999;
+    r.z.assign(std::size_t(r.nx)*r.ny, r.nodata);
+    forAll(pixelCell, p)
+    {
+        const label c = pixelCell[p];
+        if (c >= 0 && keep(c))
+        {
+            r.z[p] = f[c];
+        }
+    }
+    for (const std::string& ext : terrain::rasterExtensions(dem))
+    {
+        try
+        {
+            terrain::writeRaster(base + ext, r);
+        }
+        catch (const terrain::gdalError& e)
+        {
+            FatalErrorInFunction << e.what() << nl << exit(FatalError);
+        }
+    }
+}
+
+
+//- Mesh cell of each (i, j) of the structured grid
+labelList gridCells(const fvMesh& mesh, const hazardTerrain& t)
+{
+    labelList cellOf(t.nx*t.ny, -1);
+    const volVectorField& C = mesh.C();
+    forAll(C, c)
+    {
+        const label i = label(std::floor(C[c].x()/t.cellSize));
+        const label j = label(std::floor((C[c].y() - t.yMin)/t.cellSize));
+        if (i >= 0 && i < t.nx && j >= 0 && j < t.ny)
+        {
+            cellOf[i + t.nx*j] = c;
+        }
+    }
+    return cellOf;
+}
+
+} // End anonymous namespace
+
+
+labelList pixelCells(const fvMesh& mesh, const hazardTerrain& t)
+{
+    const labelList cellOf = gridCells(mesh, t);
+    const terrain::Raster& dem = t.dem;
+    labelList pixelCell(dem.nx*dem.ny, -1);
+    for (label j = 0; j < dem.ny; ++j)
+    {
+        for (label i = 0; i < dem.nx; ++i)
+        {
+            const double Z = dem.at(i, j);
+            if (!dem.valid(Z))
+            {
+                continue;
+            }
+            const std::array<double, 2> P = dem.point(i + 0.5, j + 0.5);
+            const double X = P[0], Y = P[1];
+            double x = 0, y = 0, z = 0;
+            if (!t.surface.local({X, Y, Z}, x, y, z))
+            {
+                continue;
+            }
+            const label ci = label(std::floor(x/t.cellSize));
+            const label cj = label(std::floor((y - t.yMin)/t.cellSize));
+            if (ci >= 0 && ci < t.nx && cj >= 0 && cj < t.ny)
+            {
+                pixelCell[i + dem.nx*j] = cellOf[ci + t.nx*cj];
+            }
+        }
+    }
+    return pixelCell;
+}
+
+
+void writeStatistics
+(
+    const argList& args, const fvMesh& mesh, const terrain::Raster& dem,
+    const labelList& pixelCell, const word& statsTime
+)
+{
+    // Every scalar field of the statistics' time but zb
+    const fileName statsDir = statisticsDir(args);
+    const fileName inst = fileName("ensemble")/"statistics"/statsTime;
+    const fileName outDir = mesh.time().path()/"postProcessing"/"hazardMaps"
+        /"ensemble"/statsTime;
+    wordList names;
+    for (const fileName& f : readDir(statsDir/statsTime, fileName::FILE))
+    {
+        if (f != "zb")
+        {
+            names.append(f);
+        }
+    }
+    Foam::sort(names);
+    if (names.empty())
+    {
+        FatalErrorInFunction
+            << "-statistics: no fields in " << statsDir/statsTime << nl
+            << "Nothing written." << nl << exit(FatalError);
+    }
+    PtrList<volScalarField> fields;
+    for (const word& name : names)
+    {
+        fields.append
+        (
+            new volScalarField
+            (
+                IOobject
+                (
+                    name, inst, mesh, IOobject::MUST_READ,
+                    IOobject::NO_WRITE, false
+                ),
+                mesh
+            )
+        );
+    }
+    mkDir(outDir);
+    forAll(fields, k)
+    {
+        const scalarField& f = fields[k].primitiveField();
+        writeMap
+        (
+            outDir/names[k], dem, pixelCell, f,
+            [](const label) { return true; }
+        );
+        Info<< "    Wrote " << names[k] << ": range [" << gMin(f) << ", "
+            << gMax(f) << "]" << nl;
+    }
+    Info<< "    Wrote " << outDir << nl << endl;
+}
+
+
+hazardFields::hazardFields
+(
+    const fvMesh& mesh, const word& now, const word& first, scalar rho
+)
+:
+    hMax(fieldIO(mesh, now, "hMax"), mesh),
+    UMax(fieldIO(mesh, now, "UMax"), mesh),
+    h(fieldIO(mesh, now, "h"), mesh),
+    zb(fieldIO(mesh, hasField(mesh, now, "zb") ? now : first, "zb"), mesh)
+{
+    maps.insert("hMax", hMax.primitiveField());
+    maps.insert("UMax", UMax.primitiveField());
+    maps.insert("deposit", h.primitiveField());
+    if (hasField(mesh, now, "pMax"))
+    {
+        maps.insert
+        (
+            "pMax",
+            volScalarField(fieldIO(mesh, now, "pMax"), mesh).primitiveField()
+        );
+    }
+    else
+    {
+        Info<< "    No field pMax: pMax = rho UMax^2, rho " << rho
+            << " kg/m^3 (transportProperties)" << nl;
+        maps.insert("pMax", scalarField(rho*sqr(UMax.primitiveField())));
+    }
+    if (hasField(mesh, now, "tArrival"))
+    {
+        maps.insert
+        (
+            "tArrival",
+            volScalarField(fieldIO(mesh, now, "tArrival"), mesh)
+                .primitiveField()
+        );
+    }
+    else
+    {
+        Info<< "    No field tArrival (a run of an older version): no"
+            << " arrival-time map" << nl;
+    }
+}
+
+
+void writeMaps
+(
+    const fileName& outDir, const hazardFields& fields,
+    const terrain::Raster& dem, const labelList& pixelCell,
+    scalar threshold
+)
+{
+    const volScalarField& hMax = fields.hMax;
+    mkDir(outDir);
+    for (const word& name : fields.maps.sortedToc())
+    {
+        const scalarField& f = fields.maps[name];
+        // -1 in tArrival: never arrived
+        const bool arrival = name == "tArrival";
+        writeMap
+        (
+            outDir/name, dem, pixelCell, f,
+            [&](const label c)
+            {
+                return hMax[c] > threshold && !(arrival && f[c] < 0);
+            }
+        );
+        Info<< "    Wrote " << name << " ("
+            << (dem.northUp() ? ".asc, .tif" : ".tif") << "): range ["
+            << gMin(f) << ", " << gMax(f) << "]" << nl;
+    }
+}
+
+} // End namespace Foam

@@ -1,0 +1,107 @@
+/*---------------------------------------------------------------------------*\
+  savageHutterFoam: Savage-Hutter granular avalanche solver
+\*---------------------------------------------------------------------------*/
+
+#include "caseFiles.H"
+#include "OSspecific.H"
+
+#include "terrainFiles.H"
+
+namespace Foam
+{
+
+namespace
+{
+
+//- The text of constant/transportProperties; FatalIOError when it is not
+//  there
+std::string transportPropertiesText
+(
+    const fileName& tpFile, const dictionary& dict
+)
+{
+    if (!isFile(tpFile))
+    {
+        FatalIOErrorInFunction(dict)
+            << "constant/transportProperties not found: terrainToCase sets"
+            << " its 'inclination' entry and keeps the rest (g, phi,"
+            << " frictionModel, ...), which must be there" << nl
+            << exit(FatalIOError);
+    }
+    return terrainFiles::readText(tpFile);
+}
+
+
+//- What maps (x, y, z) back to the DEM's world coordinates
+terrainFiles::mapping terrainMapping
+(
+    const terrainDem& dem, const chuteAxis& axis,
+    const thalwegProfile& profile, const chuteGrid& grid,
+    const releasedLayer& layer
+)
+{
+    terrainFiles::mapping m;
+    m.dem = dem.name;
+    m.axis[0] = {axis.points[0].x(), axis.points[0].y()};
+    m.axis[1] = {axis.points[1].x(), axis.points[1].y()};
+    m.origin = {axis.P0.x(), axis.P0.y(), profile.Z0};
+    m.tangent = {axis.t.x(), axis.t.y()};
+    m.cellSize = grid.cellSize;
+    m.nx = grid.nx;
+    m.ny = grid.ny;
+    m.yMax = grid.yMax;
+    m.x = profile.x;
+    m.zetaDeg = profile.zetaDeg;
+    m.releasedVolume = layer.volume;
+    return m;
+}
+
+} // End anonymous namespace
+
+
+void writeCaseFiles
+(
+    const Time& runTime, const IOdictionary& dict, const terrainDem& dem,
+    const chuteAxis& axis, const thalwegProfile& profile,
+    const chuteGrid& grid, const scalarField& zb, const releasedLayer& layer
+)
+{
+    const fileName tpFile = runTime.path()/"constant"/"transportProperties";
+    const std::string tpText = transportPropertiesText(tpFile, dict);
+
+    terrainFiles::writeBlockMeshDict
+    (
+        runTime.path()/"system"/"blockMeshDict",
+        grid.nx, grid.ny, grid.xMax, grid.yMax
+    );
+    terrainFiles::writeText
+    (
+        tpFile,
+        terrainFiles::setInclination
+        (
+            tpText, profile.x, profile.zetaDeg, dict.name()
+        )
+    );
+    mkDir(runTime.path()/"0");
+    terrainFiles::writeScalarField
+    (
+        runTime.path()/"0"/"zb", "zb", "[0 1 0 0 0 0 0]", zb, "zeroGradient"
+    );
+    terrainFiles::writeScalarField
+    (
+        runTime.path()/"0"/"h", "h", "[0 1 0 0 0 0 0]", layer.h,
+        "zeroGradient"
+    );
+    terrainFiles::writeVelocityField(runTime.path()/"0"/"U");
+    terrainFiles::writeMapping
+    (
+        runTime.path()/"constant"/"terrainMapping",
+        terrainMapping(dem, axis, profile, grid, layer)
+    );
+
+    Info<< "Wrote system/blockMeshDict, constant/transportProperties"
+        << " (inclination), 0/zb, 0/h, 0/U, constant/terrainMapping" << nl
+        << "Next: blockMesh, then savageHutterFoam" << nl << nl;
+}
+
+} // End namespace Foam
