@@ -113,6 +113,41 @@ avalancheCase::avalancheCase(Time& t, const fvMesh& m)
 
 
 template<class Real>
+void avalancheCase::copyFields(sh::Problem<Real>& pb) const
+{
+    sh::PeakMaps<Real>& peaks = pb.peaks;
+    if (hasPeaks)
+    {
+        peaks.h.resize(h.size());
+        peaks.speed.resize(h.size());
+        peaks.pressure.resize(hasPressure ? h.size() : 0);
+        peaks.arrival.resize(hasArrival ? h.size() : 0);
+    }
+    forAll(h, c)
+    {
+        const label k = smesh.gridIndex(c);
+        if (hasPeaks)
+        {
+            peaks.h[k] = Real(hMax[c]);
+            peaks.speed[k] = Real(UMax[c]);
+        }
+        if (hasPressure)
+        {
+            peaks.pressure[k] = Real(pMax()[c]);
+        }
+        if (hasArrival)
+        {
+            peaks.arrival[k] = float(tArrival[c]);
+        }
+        pb.zb[k] = Real(zb[c]);
+        pb.h[k] = Real(h[c]);
+        pb.hu[k] = Real(hasMomentum ? hU[c].x() : h[c]*U[c].x());
+        pb.hv[k] = Real(hasMomentum ? hU[c].y() : h[c]*U[c].y());
+    }
+}
+
+
+template<class Real>
 sh::Problem<Real> avalancheCase::problem() const
 {
     if (sizeof(Real) < sizeof(double))
@@ -147,35 +182,7 @@ sh::Problem<Real> avalancheCase::problem() const
         input.fail(e);
     }
     pb.startTime = runTime.value();
-    sh::PeakMaps<Real>& peaks = pb.peaks;
-    if (hasPeaks)
-    {
-        peaks.h.resize(h.size());
-        peaks.speed.resize(h.size());
-        peaks.pressure.resize(hasPressure ? h.size() : 0);
-        peaks.arrival.resize(hasArrival ? h.size() : 0);
-    }
-    forAll(h, c)
-    {
-        const label k = smesh.gridIndex(c);
-        if (hasPeaks)
-        {
-            peaks.h[k] = Real(hMax[c]);
-            peaks.speed[k] = Real(UMax[c]);
-        }
-        if (hasPressure)
-        {
-            peaks.pressure[k] = Real(pMax()[c]);
-        }
-        if (hasArrival)
-        {
-            peaks.arrival[k] = float(tArrival[c]);
-        }
-        pb.zb[k] = Real(zb[c]);
-        pb.h[k] = Real(h[c]);
-        pb.hu[k] = Real(hasMomentum ? hU[c].x() : h[c]*U[c].x());
-        pb.hv[k] = Real(hasMomentum ? hU[c].y() : h[c]*U[c].y());
-    }
+    copyFields(pb);
     if (hasPressure)
     {
         reportPressureRestart(pb);

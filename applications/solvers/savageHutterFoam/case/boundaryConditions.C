@@ -19,6 +19,66 @@ const char* supported =
     "    empty         / empty          only across a direction one cell"
     " wide (1D)";
 
+//- A fixedValue inflow's state (h, U) into c: finite, h >= 0, |U| at most
+//  maxInputSpeed, uniform along the patch
+void readInflow
+(
+    sideCondition& c,
+    const fvPatchScalarField& hp,
+    const fvPatchVectorField& Up,
+    const volScalarField& h,
+    const volVectorField& U
+)
+{
+    // The bound of the initial fields (avalancheCase.H): beyond it the
+    // scheme's squares overflow (and mag() of such a U here)
+    const scalar big = 1e30;
+    forAll(hp, facei)
+    {
+        if (!(hp[facei] >= 0 && hp[facei] <= big))
+        {
+            FatalIOErrorInFunction(h.objectPath())
+                << "Patch " << c.patch << ": inflow thickness h = "
+                << hp[facei] << " at face " << facei << " must be"
+                << " finite, >= 0 and at most 1e30" << nl
+                << exit(FatalIOError);
+        }
+        const vector& u = Up[facei];
+        if
+        (
+            !(mag(u.x()) <= big && mag(u.y()) <= big && mag(u.z()) <= big)
+         || !(mag(u) <= maxInputSpeed)
+        )
+        {
+            FatalIOErrorInFunction(U.objectPath())
+                << "Patch " << c.patch << ": inflow velocity U = " << u
+                << " at face " << facei << " must be finite, of"
+                << " magnitude at most " << label(maxInputSpeed)
+                << " m/s (the speed of light)" << nl
+                << exit(FatalIOError);
+        }
+    }
+    c.h = hp[0];
+    c.U = Up[0];
+    forAll(hp, facei)
+    {
+        if
+        (
+            mag(hp[facei] - c.h) > 1e-12*(1 + mag(c.h))
+         || mag(Up[facei] - c.U) > 1e-12*(1 + mag(c.U))
+        )
+        {
+            FatalIOErrorInFunction(h.objectPath())
+                << "Patch " << c.patch << ": fixedValue inflow must be"
+                << " uniform along the patch; face " << facei
+                << " has h = " << hp[facei] << ", U = " << Up[facei]
+                << ", face 0 h = " << c.h << ", U = " << c.U << nl
+                << exit(FatalIOError);
+        }
+    }
+}
+
+//- The condition of patch patchi on side `side` from the types of h and U
 sideCondition classify
 (
     const structuredMesh& smesh,
@@ -67,52 +127,7 @@ sideCondition classify
         {
             return c;
         }
-        // The bound of the initial fields (avalancheCase.H): beyond it the
-        // scheme's squares overflow (and mag() of such a U here)
-        const scalar big = 1e30;
-        forAll(hp, facei)
-        {
-            if (!(hp[facei] >= 0 && hp[facei] <= big))
-            {
-                FatalIOErrorInFunction(h.objectPath())
-                    << "Patch " << c.patch << ": inflow thickness h = "
-                    << hp[facei] << " at face " << facei << " must be"
-                    << " finite, >= 0 and at most 1e30" << nl
-                    << exit(FatalIOError);
-            }
-            const vector& u = Up[facei];
-            if
-            (
-                !(mag(u.x()) <= big && mag(u.y()) <= big && mag(u.z()) <= big)
-             || !(mag(u) <= maxInputSpeed)
-            )
-            {
-                FatalIOErrorInFunction(U.objectPath())
-                    << "Patch " << c.patch << ": inflow velocity U = " << u
-                    << " at face " << facei << " must be finite, of"
-                    << " magnitude at most " << label(maxInputSpeed)
-                    << " m/s (the speed of light)" << nl
-                    << exit(FatalIOError);
-            }
-        }
-        c.h = hp[0];
-        c.U = Up[0];
-        forAll(hp, facei)
-        {
-            if
-            (
-                mag(hp[facei] - c.h) > 1e-12*(1 + mag(c.h))
-             || mag(Up[facei] - c.U) > 1e-12*(1 + mag(c.U))
-            )
-            {
-                FatalIOErrorInFunction(h.objectPath())
-                    << "Patch " << c.patch << ": fixedValue inflow must be"
-                    << " uniform along the patch; face " << facei
-                    << " has h = " << hp[facei] << ", U = " << Up[facei]
-                    << ", face 0 h = " << c.h << ", U = " << c.U << nl
-                    << exit(FatalIOError);
-            }
-        }
+        readInflow(c, hp, Up, h, U);
     }
     else
     {

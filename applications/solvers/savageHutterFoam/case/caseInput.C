@@ -130,47 +130,14 @@ caseInput::caseInput(const fvMesh& mesh)
     model.g = tp.get<scalar>("g");
     model.epsilon = tp.getOrDefault<scalar>("epsilon", 1);
     model.lambda = tp.getOrDefault<scalar>("lambda", 1);
-    if (!tp.found("inclination"))
-    {
-        FatalIOErrorInFunction(tp)
-            << "Missing keyword 'inclination': the angle zeta(x) of the"
-            << " reference surface in degrees, a Function1 of x, e.g."
-            << nl << "    inclination constant 35;" << nl
-            << "    inclination table ((0 35) (17.5 35) (21.5 0) (30 0));"
-            << nl << exit(FatalIOError);
-    }
-    // An empty or unsorted table: Function1's "out-of-order value"
-    catchFatalErrors
-    (
-        [&]() { inclination = Function1<scalar>::New("inclination", tp); },
-        [this](const error& e) { failInclination(e); }
-    );
+    readInclination(tp);
 
     model.earthPressure = sh::parseEarthPressure
     (
         readChoice(tp, "earthPressure", sh::earthPressureNames())
     );
     model.phiDeg = tp.get<scalar>("phi");
-    // rho: only for the peak pressure of the hazard maps (docs/design.md,
-    // section 5)
-    if (tp.found("rho"))
-    {
-        const scalar rho = tp.get<scalar>("rho");
-        if (!(rho > 0 && rho <= 1e30))
-        {
-            FatalIOErrorInFunction(tp)
-                << "rho = " << rho << ": the density [kg/m^3] must be"
-                << " positive and at most 1e30" << nl << exit(FatalIOError);
-        }
-        model.rho = rho;
-        Info<< "    rho           " << rho << " kg/m^3 (peak pressure pMax)"
-            << nl;
-    }
-    // The arrival time's threshold, validated with the model (makeParams)
-    model.arrivalThreshold =
-        tp.getOrDefault<scalar>("arrivalThreshold", 0.01);
-    Info<< "    arrivalThreshold " << model.arrivalThreshold
-        << " m (arrival time tArrival)" << nl;
+    readHazardSettings(tp);
 
     friction_ = frictionModel::New(tp);
     friction_->set(model);
@@ -187,6 +154,13 @@ caseInput::caseInput(const fvMesh& mesh)
 
     readSources();
 
+    readSolverSettings();
+    readTimeControl();
+}
+
+
+void caseInput::readSolverSettings()
+{
     // fvSolution::savageHutter: a misspelt keyword must not fall back
     Info<< "Reading fvSolution::savageHutter" << nl;
     for (const word& key : solverDict_.toc())
@@ -238,28 +212,33 @@ caseInput::caseInput(const fvMesh& mesh)
         << (steadyStateTolerance > 0 ? " m/s (RMS of |dh/dt| over wet cells)" : " (off)") << nl
         << "    kineticEnergyStop " << kineticEnergyStop
         << (kineticEnergyStop > 0 ? " (of the peak kinetic energy)" : " (off)") << nl;
+}
 
+
+void caseInput::readTimeControl()
+{
+    const Time& runTime = mesh_.time();
     // controlDict: the CFL number of eq. (24) and the output times
-    control = controlSettings::read(mesh.time().controlDict());
+    control = controlSettings::read(runTime.controlDict());
     // startFrom startTime names the directory to read: say so when it is
     // not there (rather than a missing file <startTime>/h)
     if
     (
         control.startFrom == "startTime"
-     && !isDir(mesh.time().timePath())
+     && !isDir(runTime.timePath())
     )
     {
         const entry* e =
-            mesh.time().controlDict().findEntry("startTime", keyType::LITERAL);
-        FatalIOErrorInFunction(mesh.time().controlDict())
-            << "startTime " << mesh.time().timeName().c_str();
+            runTime.controlDict().findEntry("startTime", keyType::LITERAL);
+        FatalIOErrorInFunction(runTime.controlDict())
+            << "startTime " << runTime.timeName().c_str();
         if (e)
         {
             FatalIOError << " at line " << e->startLineNumber();
         }
         FatalIOError
             << " (startFrom startTime): no time directory "
-            << mesh.time().timePath().c_str() << nl
+            << runTime.timePath().c_str() << nl
             << "Valid values: the time of an existing time directory,"
             << " or startFrom latestTime" << nl << exit(FatalIOError);
     }
@@ -290,7 +269,152 @@ caseInput::caseInput(const fvMesh& mesh)
 }
 
 
-void caseInput::readSources()
+void caseInput::readInclination(const dictionary& tp)
+{
+    if (!tp.found("inclination"))
+    {
+        FatalIOErrorInFunction(tp)
+            << "Missing keyword 'inclination': the angle zeta(x) of the"
+            << " reference surface in degrees, a Function1 of x, e.g."
+            << nl << "    inclination constant 35;" << nl
+            << "    inclination table ((0 35) (17.5 35) (21.5 0) (30 0));"
+            << nl << exit(FatalIOError);
+    }
+    // An empty or unsorted table: Function1's "out-of-order value"
+    catchFatalErrors
+    (
+        [&]() { inclination = Function1<scalar>::New("inclination", tp); },
+        [this](const error& e) { failInclination(e); }
+    );
+}
+
+
+void caseInput::readHazardSettings(const dictionary& tp)
+{
+    // rho: only for the peak pressure of the hazard maps (docs/design.md,
+    // section 5)
+    if (tp.found("rho"))
+    {
+        const scalar rho = tp.get<scalar>("rho");
+        if (!(rho > 0 && rho <= 1e30))
+        {
+            FatalIOErrorInFunction(tp)
+                << "rho = " << rho << ": the density [kg/m^3] must be"
+                << " positive and at most 1e30" << nl << exit(FatalIOError);
+        }
+        model.rho = rho;
+        Info<< "    rho           " << rho << " kg/m^3 (peak pressure pMax)"
+            << nl;
+    }
+    // The arrival time's threshold, validated with the model (makeParams)
+    model.arrivalThreshold =
+        tp.getOrDefault<scalar>("arrivalThreshold", 0.01);
+    Info<< "    arrivalThreshold " << model.arrivalThreshold
+        << " m (arrival time tArrival)" << nl;
+}
+
+
+namespace
+{
+
+const wordList jetKeywords({"centre", "R", "R_imp", "u_jet"});
+
+//- The keywords of impingingJet entry e (src: its dictionary, c: where its
+//  coefficients are, src itself or its coeffsName sub-dictionary): none
+//  unknown, every one of jetKeywords in c
+void checkJetKeywords
+(
+    const entry& e,
+    const dictionary& src,
+    const dictionary& c,
+    const word& type,
+    const word& coeffsName
+)
+{
+    const wordList entryKeywords({"type", "active", "selectionMode"});
+    for (const word& key : src.toc())
+    {
+        const bool ok =
+            entryKeywords.found(key) || key == coeffsName
+         || (&c == &src && jetKeywords.found(key));
+        if (!ok)
+        {
+            FatalIOErrorInFunction(src)
+                << "Unknown keyword '" << key << "' of " << type << "."
+                << nl << "Valid keywords: " << flatOutput(entryKeywords)
+                << " and " << flatOutput(jetKeywords) << " (directly or"
+                << " in " << type << "Coeffs)" << nl
+                << exit(FatalIOError);
+        }
+    }
+    if (&c != &src)
+    {
+        for (const word& key : c.toc())
+        {
+            if (!jetKeywords.found(key))
+            {
+                FatalIOErrorInFunction(c)
+                    << "Unknown keyword '" << key << "' of " << type
+                    << "." << nl << "Valid keywords: "
+                    << flatOutput(jetKeywords) << nl
+                    << exit(FatalIOError);
+            }
+        }
+    }
+    for (const word& key : jetKeywords)
+    {
+        if (!c.found(key, keyType::LITERAL))
+        {
+            FatalIOErrorInFunction(c)
+                << "Missing keyword '" << key << "' of " << e.keyword()
+                << " (" << type << ")." << nl << "The coefficients "
+                << flatOutput(jetKeywords) << " go directly in "
+                << e.keyword() << " or in its " << coeffsName
+                << " { ... }" << nl << exit(FatalIOError);
+        }
+    }
+}
+
+//- The coefficients of the active source entry e of this type, checked:
+//  in <type>Coeffs or in the entry itself, as fvOptions takes them
+const dictionary& jetCoeffs(const entry& e, const word& type)
+{
+    const dictionary& src = e.dict();
+    // As fvOptions: coefficients in <type>Coeffs or in the entry
+    const word coeffsName = type + "Coeffs";
+    const entry* ce = src.findEntry(coeffsName, keyType::LITERAL);
+    if (ce && !ce->isDict())
+    {
+        FatalIOErrorInFunction(src)
+            << coeffsName << " of " << e.keyword() << " is not a"
+            << " sub-dictionary." << nl << "Valid forms: the"
+            << " coefficients in " << coeffsName << " { ... } or in "
+            << e.keyword() << " itself" << nl << exit(FatalIOError);
+    }
+    const dictionary& c = src.optionalSubDict(coeffsName);
+    // fvOptions' cell selection: the jet selects the cells within
+    // R_imp of its centre itself
+    if (src.found("selectionMode", keyType::LITERAL))
+    {
+        const word mode = src.get<word>("selectionMode");
+        if (mode != "all")
+        {
+            FatalIOErrorInFunction(src)
+                << "Invalid selectionMode " << mode << " of "
+                << e.keyword() << ": the impinging jet imposes its"
+                << " state on the cells within R_imp of its centre."
+                << nl << "Valid choices: (all)" << nl
+                << exit(FatalIOError);
+        }
+    }
+    checkJetKeywords(e, src, c, type, coeffsName);
+    return c;
+}
+
+} // namespace
+
+
+bool caseInput::openSources()
 {
     const Time& runTime = mesh_.time();
     IOobject inSystem
@@ -313,14 +437,23 @@ void caseInput::readSources()
     }
     if (!sys && !con)
     {
-        return;
+        return false;
     }
     fvOptions_.reset(new IOdictionary(sys ? inSystem : inConstant));
+    return true;
+}
+
+
+void caseInput::readSources()
+{
+    if (!openSources())
+    {
+        return;
+    }
     const dictionary& opts = fvOptions_();
     Info<< "Reading " << opts.name() << nl;
 
     const wordList validTypes({"impingingJet"});
-    const wordList jetKeywords({"centre", "R", "R_imp", "u_jet"});
     for (const entry& e : opts)
     {
         if (e.keyword() == "FoamFile")
@@ -358,95 +491,32 @@ void caseInput::readSources()
                 << " and " << jetDict_->dictName() << nl
                 << exit(FatalIOError);
         }
-        // As fvOptions: coefficients in <type>Coeffs or in the entry
-        const word coeffsName = type + "Coeffs";
-        const entry* ce = src.findEntry(coeffsName, keyType::LITERAL);
-        if (ce && !ce->isDict())
-        {
-            FatalIOErrorInFunction(src)
-                << coeffsName << " of " << e.keyword() << " is not a"
-                << " sub-dictionary." << nl << "Valid forms: the"
-                << " coefficients in " << coeffsName << " { ... } or in "
-                << e.keyword() << " itself" << nl << exit(FatalIOError);
-        }
-        const dictionary& c = src.optionalSubDict(coeffsName);
-        // fvOptions' cell selection: the jet selects the cells within
-        // R_imp of its centre itself
-        if (src.found("selectionMode", keyType::LITERAL))
-        {
-            const word mode = src.get<word>("selectionMode");
-            if (mode != "all")
-            {
-                FatalIOErrorInFunction(src)
-                    << "Invalid selectionMode " << mode << " of "
-                    << e.keyword() << ": the impinging jet imposes its"
-                    << " state on the cells within R_imp of its centre."
-                    << nl << "Valid choices: (all)" << nl
-                    << exit(FatalIOError);
-            }
-        }
-        const wordList entryKeywords({"type", "active", "selectionMode"});
-        for (const word& key : src.toc())
-        {
-            const bool ok =
-                entryKeywords.found(key) || key == coeffsName
-             || (&c == &src && jetKeywords.found(key));
-            if (!ok)
-            {
-                FatalIOErrorInFunction(src)
-                    << "Unknown keyword '" << key << "' of " << type << "."
-                    << nl << "Valid keywords: " << flatOutput(entryKeywords)
-                    << " and " << flatOutput(jetKeywords) << " (directly or"
-                    << " in " << type << "Coeffs)" << nl
-                    << exit(FatalIOError);
-            }
-        }
-        if (&c != &src)
-        {
-            for (const word& key : c.toc())
-            {
-                if (!jetKeywords.found(key))
-                {
-                    FatalIOErrorInFunction(c)
-                        << "Unknown keyword '" << key << "' of " << type
-                        << "." << nl << "Valid keywords: "
-                        << flatOutput(jetKeywords) << nl
-                        << exit(FatalIOError);
-                }
-            }
-        }
-        for (const word& key : jetKeywords)
-        {
-            if (!c.found(key, keyType::LITERAL))
-            {
-                FatalIOErrorInFunction(c)
-                    << "Missing keyword '" << key << "' of " << e.keyword()
-                    << " (" << type << ")." << nl << "The coefficients "
-                    << flatOutput(jetKeywords) << " go directly in "
-                    << e.keyword() << " or in its " << coeffsName
-                    << " { ... }" << nl << exit(FatalIOError);
-            }
-        }
-        jetDict_ = &c;
-        const vector centre = c.get<vector>("centre");
-        jet.xc = centre.x();
-        jet.yc = centre.y();
-        jet.R = c.get<scalar>("R");
-        jet.rImp = c.get<scalar>("R_imp");
-        jet.uJet = c.get<scalar>("u_jet");
-        if (!(jet.uJet <= maxInputSpeed))
-        {
-            FatalIOErrorInFunction(c)
-                << "u_jet " << jet.uJet << ": the jet's speed must be at"
-                << " most " << label(maxInputSpeed)
-                << " m/s (the speed of light)" << nl << exit(FatalIOError);
-        }
-        jet.zeta = degToRad(inclinationAt(jet.xc));
-        hasJet = true;
-        Info<< "    " << e.keyword() << ": impingingJet at " << centre
-            << ", R " << jet.R << ", R_imp " << jet.rImp << ", u_jet "
-            << jet.uJet << ", zeta " << radToDeg(jet.zeta) << " deg" << nl;
+        readJet(e.keyword(), jetCoeffs(e, type));
     }
+}
+
+
+void caseInput::readJet(const word& name, const dictionary& c)
+{
+    jetDict_ = &c;
+    const vector centre = c.get<vector>("centre");
+    jet.xc = centre.x();
+    jet.yc = centre.y();
+    jet.R = c.get<scalar>("R");
+    jet.rImp = c.get<scalar>("R_imp");
+    jet.uJet = c.get<scalar>("u_jet");
+    if (!(jet.uJet <= maxInputSpeed))
+    {
+        FatalIOErrorInFunction(c)
+            << "u_jet " << jet.uJet << ": the jet's speed must be at"
+            << " most " << label(maxInputSpeed)
+            << " m/s (the speed of light)" << nl << exit(FatalIOError);
+    }
+    jet.zeta = degToRad(inclinationAt(jet.xc));
+    hasJet = true;
+    Info<< "    " << name << ": impingingJet at " << centre
+        << ", R " << jet.R << ", R_imp " << jet.rImp << ", u_jet "
+        << jet.uJet << ", zeta " << radToDeg(jet.zeta) << " deg" << nl;
 }
 
 

@@ -45,13 +45,14 @@ struct parameter
     wordList names;
 };
 
-} // namespace
+//- The number of values (or fields) a parameter lists
+label count(const parameter& p)
+{
+    return p.words ? p.names.size() : p.values.size();
+}
 
-
-ensembleInput::ensembleInput(const Time& runTime, const caseInput& input)
-:
-    thresholds({0.01, 0.1, 1}),
-    percentiles({5, 50, 95})
+//- No ensembleDict: say what one looks like
+void requireDict(const Time& runTime)
 {
     const fileName path = runTime.path()/runTime.system()/"ensembleDict";
     if (!isFile(path))
@@ -64,15 +65,11 @@ ensembleInput::ensembleInput(const Time& runTime, const caseInput& input)
             << "    }" << nl << "    combine product;   // or list" << nl
             << "(docs/design.md section 6)" << nl << exit(FatalError);
     }
-    const IOdictionary dict
-    (
-        IOobject
-        (
-            "ensembleDict", runTime.system(), runTime,
-            IOobject::MUST_READ, IOobject::NO_WRITE, false
-        )
-    );
-    Info<< "Reading ensembleDict" << nl;
+}
+
+//- Every keyword known, and a sub-dictionary parameters
+void checkKeywords(const dictionary& dict)
+{
     for (const word& key : dict.toc())
     {
         if (!ensembleKeywords.found(key) && key != "FoamFile")
@@ -89,8 +86,12 @@ ensembleInput::ensembleInput(const Time& runTime, const caseInput& input)
             << "Missing sub-dictionary 'parameters' { <name> <values>; ... }"
             << nl << exit(FatalIOError);
     }
-    const dictionary& pd = dict.subDict("parameters");
-    const bool sampled = dict.found("samples");
+}
+
+//- samples (sampled: ensembleDict has samples), or combine product or
+//  list; a seed only with samples, and not samples and combine both
+word readMode(const dictionary& dict, const bool sampled)
+{
     if (!sampled && dict.found("seed"))
     {
         FatalIOErrorInFunction(dict)
@@ -105,24 +106,27 @@ ensembleInput::ensembleInput(const Time& runTime, const caseInput& input)
             << " or 'combine product|list;' (values listed), not both" << nl
             << exit(FatalIOError);
     }
-    mode = sampled ? word("samples") : dict.getOrDefault<word>("combine", "product");
+    const word mode = sampled ? word("samples") : dict.getOrDefault<word>("combine", "product");
     if (!wordList({"product", "list", "samples"}).found(mode) || mode == "samples" && !sampled)
     {
         FatalIOErrorInFunction(dict)
             << "Unknown combine '" << mode << "'." << nl
             << "Valid choices: (product list)" << nl << exit(FatalIOError);
     }
+    return mode;
+}
 
-    // The parameters, in the order listed
-    const wordList valid = input.memberKeywords();
-    wordList allValid(valid);
-    allValid.append("hScale");
-    allValid.append("release");
-    // The entries in the order listed: a keyword path such as
-    // "CoulombCoeffs/delta" reads as the entry delta of a sub-dictionary
-    // CoulombCoeffs (so does CoulombCoeffs { delta (...); }), which gathers
-    // every path into it where the first appeared: their lines in the file
-    // give back the order they were written in
+//- The entries of parameters in the order listed, each with the
+//  dictionary that holds it: a keyword path such as "CoulombCoeffs/delta"
+//  reads as the entry delta of a sub-dictionary CoulombCoeffs (so does
+//  CoulombCoeffs { delta (...); }), which gathers every path into it where
+//  the first appeared: their lines in the file give back the order they
+//  were written in
+DynamicList<Tuple2<word, const dictionary*>> entriesInOrder
+(
+    const dictionary& pd
+)
+{
     DynamicList<Tuple2<word, const dictionary*>> entries;
     DynamicList<label> lines;
     for (const word& name : pd.toc())
@@ -142,147 +146,166 @@ ensembleInput::ensembleInput(const Time& runTime, const caseInput& input)
             lines.append(pd.findEntry(name, keyType::LITERAL)->startLineNumber());
         }
     }
+    labelList order(entries.size());
+    forAll(order, i)
     {
-        labelList order(entries.size());
-        forAll(order, i)
-        {
-            order[i] = i;
-        }
-        std::stable_sort
-        (
-            order.begin(), order.end(),
-            [&](const label a, const label b) { return lines[a] < lines[b]; }
-        );
-        DynamicList<Tuple2<word, const dictionary*>> sorted;
-        for (const label i : order)
-        {
-            sorted.append(entries[i]);
-        }
-        entries.transfer(sorted);
+        order[i] = i;
     }
-    List<parameter> params;
-    wordList listed;
-    for (const auto& en : entries)
+    std::stable_sort
+    (
+        order.begin(), order.end(),
+        [&](const label a, const label b) { return lines[a] < lines[b]; }
+    );
+    DynamicList<Tuple2<word, const dictionary*>> sorted;
+    for (const label i : order)
     {
-        const word& name = en.first();
-        const dictionary& in = *en.second();
-        const word key = name.substr(name.rfind('/') + 1);
-        if (!allValid.found(name) || in.isDict(key))
-        {
-            FatalIOErrorInFunction(in)
-                << "Unknown parameter '" << name << "'." << nl
-                << "Valid parameters: " << flatOutput(allValid)
-                << " (the coefficients of the frictionModel selected in"
-                << " transportProperties)" << nl << exit(FatalIOError);
-        }
-        listed.append(name);
-        parameter p;
-        p.name = name;
-        p.words = name == "release";
-        ITstream& is = in.lookup(key);
-        token first(is);
-        if (first.isWord())
-        {
-            p.distribution = first.wordToken();
-            if (!sampled || p.words)
-            {
-                FatalIOErrorInFunction(in)
-                    << "Parameter '" << name << "': a distribution ("
-                    << p.distribution << ") "
-                    << (p.words
-                        ? "for release: give the fields as a list"
-                        : "needs 'samples N; seed S;' (with combine, list the"
-                          " values)")
-                    << nl << exit(FatalIOError);
-            }
-            if (p.distribution != "uniform" && p.distribution != "normal")
-            {
-                FatalIOErrorInFunction(in)
-                    << "Parameter '" << name << "': unknown distribution '"
-                    << p.distribution << "'." << nl
-                    << "Valid choices: (uniform normal)" << nl
-                    << exit(FatalIOError);
-            }
-            p.values = scalarList(is);
-            const bool uniform = p.distribution == "uniform";
-            if
-            (
-                p.values.size() != 2
-             || !std::isfinite(p.values[0]) || !std::isfinite(p.values[1])
-             || (uniform ? !(p.values[0] <= p.values[1]) : !(p.values[1] >= 0))
-            )
-            {
-                FatalIOErrorInFunction(in)
-                    << "Parameter '" << name << "': " << p.distribution
-                    << " " << p.values << " is not a range." << nl
-                    << "Valid: " << (uniform ? "uniform (a b) with a <= b"
-                        : "normal (mean sd) with sd >= 0") << ", finite"
-                    << nl << exit(FatalIOError);
-            }
-        }
-        else
-        {
-            is.putBack(first);
-            if (p.words)
-            {
-                p.names = wordList(is);
-            }
-            else
-            {
-                p.values = scalarList(is);
-            }
-            const label n = p.words ? p.names.size() : p.values.size();
-            if (n == 0)
-            {
-                FatalIOErrorInFunction(in)
-                    << "Parameter '" << name << "' has no values" << nl
-                    << exit(FatalIOError);
-            }
-            if (sampled && !p.words)
-            {
-                FatalIOErrorInFunction(in)
-                    << "Parameter '" << name << "': with samples, give a"
-                    << " range, uniform (a b) or normal (mean sd)" << nl
-                    << exit(FatalIOError);
-            }
-            for (const scalar v : p.values)
-            {
-                if (!std::isfinite(v))
-                {
-                    FatalIOErrorInFunction(in)
-                        << "Parameter '" << name << "': " << v
-                        << " is not a finite number" << nl
-                        << exit(FatalIOError);
-                }
-            }
-        }
-        if (p.words)
-        {
-            variesRelease = true;
-        }
-        else if (name == "hScale")
-        {
-            variesHScale = true;
-        }
-        else
-        {
-            keys.append(name);
-        }
-        params.append(p);
+        sorted.append(entries[i]);
     }
-    if (params.empty())
+    return sorted;
+}
+
+//- A parameter given by a distribution (p.distribution, read from is):
+//  its range, uniform (a b) or normal (mean sd); only with samples, and
+//  not for release
+void readRange
+(
+    parameter& p,
+    ITstream& is,
+    const dictionary& in,
+    const bool sampled
+)
+{
+    const word& name = p.name;
+    if (!sampled || p.words)
     {
-        FatalIOErrorInFunction(pd)
-            << "No parameters to vary." << nl
-            << "Valid parameters: " << flatOutput(allValid) << nl
+        FatalIOErrorInFunction(in)
+            << "Parameter '" << name << "': a distribution ("
+            << p.distribution << ") "
+            << (p.words
+                ? "for release: give the fields as a list"
+                : "needs 'samples N; seed S;' (with combine, list the"
+                  " values)")
+            << nl << exit(FatalIOError);
+    }
+    if (p.distribution != "uniform" && p.distribution != "normal")
+    {
+        FatalIOErrorInFunction(in)
+            << "Parameter '" << name << "': unknown distribution '"
+            << p.distribution << "'." << nl
+            << "Valid choices: (uniform normal)" << nl
             << exit(FatalIOError);
     }
-
-    // The members
-    const auto count = [](const parameter& p)
+    p.values = scalarList(is);
+    const bool uniform = p.distribution == "uniform";
+    if
+    (
+        p.values.size() != 2
+     || !std::isfinite(p.values[0]) || !std::isfinite(p.values[1])
+     || (uniform ? !(p.values[0] <= p.values[1]) : !(p.values[1] >= 0))
+    )
     {
-        return p.words ? p.names.size() : p.values.size();
-    };
+        FatalIOErrorInFunction(in)
+            << "Parameter '" << name << "': " << p.distribution
+            << " " << p.values << " is not a range." << nl
+            << "Valid: " << (uniform ? "uniform (a b) with a <= b"
+                : "normal (mean sd) with sd >= 0") << ", finite"
+            << nl << exit(FatalIOError);
+    }
+}
+
+//- A parameter given by a list (read from is): its values, finite, or
+//  for release the names of fields; values only with combine
+void readList
+(
+    parameter& p,
+    ITstream& is,
+    const dictionary& in,
+    const bool sampled
+)
+{
+    const word& name = p.name;
+    if (p.words)
+    {
+        p.names = wordList(is);
+    }
+    else
+    {
+        p.values = scalarList(is);
+    }
+    const label n = p.words ? p.names.size() : p.values.size();
+    if (n == 0)
+    {
+        FatalIOErrorInFunction(in)
+            << "Parameter '" << name << "' has no values" << nl
+            << exit(FatalIOError);
+    }
+    if (sampled && !p.words)
+    {
+        FatalIOErrorInFunction(in)
+            << "Parameter '" << name << "': with samples, give a"
+            << " range, uniform (a b) or normal (mean sd)" << nl
+            << exit(FatalIOError);
+    }
+    for (const scalar v : p.values)
+    {
+        if (!std::isfinite(v))
+        {
+            FatalIOErrorInFunction(in)
+                << "Parameter '" << name << "': " << v
+                << " is not a finite number" << nl
+                << exit(FatalIOError);
+        }
+    }
+}
+
+//- The parameter `name` of dictionary `in` (an entry of parameters or of
+//  a sub-dictionary of it): a valid name, then a range or a list
+parameter readParameter
+(
+    const word& name,
+    const dictionary& in,
+    const bool sampled,
+    const wordList& allValid
+)
+{
+    const word key = name.substr(name.rfind('/') + 1);
+    if (!allValid.found(name) || in.isDict(key))
+    {
+        FatalIOErrorInFunction(in)
+            << "Unknown parameter '" << name << "'." << nl
+            << "Valid parameters: " << flatOutput(allValid)
+            << " (the coefficients of the frictionModel selected in"
+            << " transportProperties)" << nl << exit(FatalIOError);
+    }
+    parameter p;
+    p.name = name;
+    p.words = name == "release";
+    ITstream& is = in.lookup(key);
+    token first(is);
+    if (first.isWord())
+    {
+        p.distribution = first.wordToken();
+        readRange(p, is, in, sampled);
+    }
+    else
+    {
+        is.putBack(first);
+        readList(p, is, in, sampled);
+    }
+    return p;
+}
+
+//- The number of members: samples (with a seed), as many as each
+//  parameter has values (combine list) or their product (combine
+//  product); from 1 to maxMembers
+label memberCount
+(
+    const dictionary& dict,
+    const List<parameter>& params,
+    const bool sampled,
+    const word& mode
+)
+{
     label n = 1;
     if (sampled)
     {
@@ -325,119 +348,247 @@ ensembleInput::ensembleInput(const Time& runTime, const caseInput& input)
             << "The ensemble would have " << n << " members." << nl
             << "Valid: 1 to " << maxMembers << nl << exit(FatalIOError);
     }
+    return n;
+}
 
+//- What member k of n sets (m.values: nKeys, one for each parameter
+//  that is neither hScale nor release): drawn from rng, parameter by
+//  parameter (samples), or picked, the k-th value of each (combine list)
+//  or the last parameter varying fastest (combine product)
+void pickMember
+(
+    ensembleInput::member& m,
+    const label k,
+    const label n,
+    const List<parameter>& params,
+    const label nKeys,
+    const bool sampled,
+    const word& mode,
+    std::mt19937_64& rng
+)
+{
+    m.values.resize(nKeys);
+    label index = k;
+    label stride = n;
+    label key = 0;
+    forAll(params, q)
+    {
+        const parameter& p = params[q];
+        label pick = 0;
+        scalar value = 0;
+        if (sampled)
+        {
+            if (p.words)
+            {
+                pick = min(label(unit(rng)*p.names.size()), p.names.size() - 1);
+            }
+            else if (p.distribution == "uniform")
+            {
+                value = p.values[0] + (p.values[1] - p.values[0])*unit(rng);
+            }
+            else
+            {
+                // Box-Muller: u1 in (0, 1]
+                const double u1 = 1.0 - unit(rng);
+                const double u2 = unit(rng);
+                value = p.values[0] + p.values[1]
+                   *std::sqrt(-2.0*std::log(u1))
+                   *std::cos(2.0*constant::mathematical::pi*u2);
+            }
+        }
+        else
+        {
+            if (mode == "list")
+            {
+                pick = k;
+            }
+            else
+            {
+                // The last parameter varying fastest
+                stride /= count(p);
+                pick = index/stride;
+                index -= pick*stride;
+            }
+            if (!p.words)
+            {
+                value = p.values[pick];
+            }
+        }
+        if (p.words)
+        {
+            m.release = p.names[pick];
+        }
+        else if (p.name == "hScale")
+        {
+            m.hScale = value;
+        }
+        else
+        {
+            m.values[key++] = value;
+        }
+    }
+}
+
+//- thresholds or percentiles (key: which) name the statistics' fields by
+//  "%g" of each value: no two may give the same name
+void checkDistinct
+(
+    const dictionary& dict,
+    const scalarList& v,
+    const char* key
+)
+{
+    wordList names;
+    for (const scalar x : v)
+    {
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "%g", x);
+        if (names.found(buf))
+        {
+            FatalIOErrorInFunction(dict)
+                << key << " " << v << ": " << buf << " twice (values"
+                << " name the statistics' fields by 6 significant"
+                << " digits: each must differ in those)" << nl
+                << exit(FatalIOError);
+        }
+        names.append(buf);
+    }
+}
+
+} // namespace
+
+
+ensembleInput::ensembleInput(const Time& runTime, const caseInput& input)
+:
+    thresholds({0.01, 0.1, 1}),
+    percentiles({5, 50, 95})
+{
+    requireDict(runTime);
+    const IOdictionary dict
+    (
+        IOobject
+        (
+            "ensembleDict", runTime.system(), runTime,
+            IOobject::MUST_READ, IOobject::NO_WRITE, false
+        )
+    );
+    Info<< "Reading ensembleDict" << nl;
+    checkKeywords(dict);
+    const dictionary& pd = dict.subDict("parameters");
+    const bool sampled = dict.found("samples");
+    mode = readMode(dict, sampled);
+
+    // The parameters, in the order listed
+    const wordList valid = input.memberKeywords();
+    wordList allValid(valid);
+    allValid.append("hScale");
+    allValid.append("release");
+    List<parameter> params;
+    wordList listed;
+    for (const auto& en : entriesInOrder(pd))
+    {
+        const parameter p =
+            readParameter(en.first(), *en.second(), sampled, allValid);
+        listed.append(p.name);
+        if (p.words)
+        {
+            variesRelease = true;
+        }
+        else if (p.name == "hScale")
+        {
+            variesHScale = true;
+        }
+        else
+        {
+            keys.append(p.name);
+        }
+        params.append(p);
+    }
+    if (params.empty())
+    {
+        FatalIOErrorInFunction(pd)
+            << "No parameters to vary." << nl
+            << "Valid parameters: " << flatOutput(allValid) << nl
+            << exit(FatalIOError);
+    }
+
+    // The members, each checked as the case is
+    const label n = memberCount(dict, params, sampled, mode);
     std::mt19937_64 rng(sampled ? std::uint64_t(dict.get<label>("seed")) : 0u);
     members.resize(n);
     forAll(members, k)
     {
-        member& m = members[k];
-        m.values.resize(keys.size());
-        label index = k;
-        label stride = n;
-        label key = 0;
-        forAll(params, q)
-        {
-            const parameter& p = params[q];
-            label pick = 0;
-            scalar value = 0;
-            if (sampled)
-            {
-                if (p.words)
-                {
-                    pick = min(label(unit(rng)*p.names.size()), p.names.size() - 1);
-                }
-                else if (p.distribution == "uniform")
-                {
-                    value = p.values[0] + (p.values[1] - p.values[0])*unit(rng);
-                }
-                else
-                {
-                    // Box-Muller: u1 in (0, 1]
-                    const double u1 = 1.0 - unit(rng);
-                    const double u2 = unit(rng);
-                    value = p.values[0] + p.values[1]
-                       *std::sqrt(-2.0*std::log(u1))
-                       *std::cos(2.0*constant::mathematical::pi*u2);
-                }
-            }
-            else
-            {
-                if (mode == "list")
-                {
-                    pick = k;
-                }
-                else
-                {
-                    // The last parameter varying fastest
-                    stride /= count(p);
-                    pick = index/stride;
-                    index -= pick*stride;
-                }
-                if (!p.words)
-                {
-                    value = p.values[pick];
-                }
-            }
-            if (p.words)
-            {
-                m.release = p.names[pick];
-            }
-            else if (p.name == "hScale")
-            {
-                m.hScale = value;
-            }
-            else
-            {
-                m.values[key++] = value;
-            }
-        }
-
-        // Each member as the case is checked
-        if (!(m.hScale > 0 && m.hScale <= 1e6))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Member " << k << " (" << describe(k).c_str() << "): hScale "
-                << m.hScale << " must be positive (at most 1e6)" << nl
-                << exit(FatalIOError);
-        }
-        if
-        (
-            !m.release.empty()
-         && !isFile(runTime.path()/runTime.timeName()/m.release)
-        )
-        {
-            FatalIOErrorInFunction(dict)
-                << "Member " << k << ": release field " << m.release
-                << " not found: " << runTime.path()/runTime.timeName()/m.release
-                << nl << "Valid: the name of a thickness field in the start"
-                << " time directory, e.g. h.release1" << nl << exit(FatalIOError);
-        }
-        std::string why;
-        const bool ioThrows = FatalIOError.throwExceptions();
-        const bool throws = FatalError.throwExceptions();
-        try
-        {
-            input.memberModel(keys, m.values);
-        }
-        catch (const sh::InputError& e)
-        {
-            why = e.what();
-        }
-        catch (const error& e)
-        {
-            why = e.message();
-        }
-        FatalIOError.throwExceptions(ioThrows);
-        FatalError.throwExceptions(throws);
-        if (!why.empty())
-        {
-            FatalIOErrorInFunction(dict)
-                << "Member " << k << " (" << describe(k).c_str() << ") is not a"
-                << " valid case: " << why.c_str() << nl << exit(FatalIOError);
-        }
+        pickMember(members[k], k, n, params, keys.size(), sampled, mode, rng);
+        checkMember(k, runTime, input, dict);
     }
 
     // Statistics and the report
+    readStatistics(dict);
+
+    Info<< "    " << n << " members (" << mode << ") of "
+        << flatOutput(listed) << nl
+        << "    thresholds " << flatOutput(thresholds) << " m, percentiles "
+        << flatOutput(percentiles) << ", runoutThreshold " << runoutThreshold
+        << " m" << nl << endl;
+}
+
+
+void ensembleInput::checkMember
+(
+    const label k,
+    const Time& runTime,
+    const caseInput& input,
+    const dictionary& dict
+) const
+{
+    const member& m = members[k];
+    if (!(m.hScale > 0 && m.hScale <= 1e6))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Member " << k << " (" << describe(k).c_str() << "): hScale "
+            << m.hScale << " must be positive (at most 1e6)" << nl
+            << exit(FatalIOError);
+    }
+    if
+    (
+        !m.release.empty()
+     && !isFile(runTime.path()/runTime.timeName()/m.release)
+    )
+    {
+        FatalIOErrorInFunction(dict)
+            << "Member " << k << ": release field " << m.release
+            << " not found: " << runTime.path()/runTime.timeName()/m.release
+            << nl << "Valid: the name of a thickness field in the start"
+            << " time directory, e.g. h.release1" << nl << exit(FatalIOError);
+    }
+    std::string why;
+    const bool ioThrows = FatalIOError.throwExceptions();
+    const bool throws = FatalError.throwExceptions();
+    try
+    {
+        input.memberModel(keys, m.values);
+    }
+    catch (const sh::InputError& e)
+    {
+        why = e.what();
+    }
+    catch (const error& e)
+    {
+        why = e.message();
+    }
+    FatalIOError.throwExceptions(ioThrows);
+    FatalError.throwExceptions(throws);
+    if (!why.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Member " << k << " (" << describe(k).c_str() << ") is not a"
+            << " valid case: " << why.c_str() << nl << exit(FatalIOError);
+    }
+}
+
+
+void ensembleInput::readStatistics(const dictionary& dict)
+{
     thresholds = dict.getOrDefault<scalarList>("thresholds", thresholds);
     percentiles = dict.getOrDefault<scalarList>("percentiles", percentiles);
     runoutThreshold =
@@ -460,38 +611,14 @@ ensembleInput::ensembleInput(const Time& runTime, const caseInput& input)
                 << exit(FatalIOError);
         }
     }
-    const auto distinct = [&](const scalarList& v, const char* key)
-    {
-        wordList names;
-        for (const scalar x : v)
-        {
-            char buf[64];
-            std::snprintf(buf, sizeof buf, "%g", x);
-            if (names.found(buf))
-            {
-                FatalIOErrorInFunction(dict)
-                    << key << " " << v << ": " << buf << " twice (values"
-                    << " name the statistics' fields by 6 significant"
-                    << " digits: each must differ in those)" << nl
-                    << exit(FatalIOError);
-            }
-            names.append(buf);
-        }
-    };
-    distinct(thresholds, "thresholds");
-    distinct(percentiles, "percentiles");
+    checkDistinct(dict, thresholds, "thresholds");
+    checkDistinct(dict, percentiles, "percentiles");
     if (!(runoutThreshold > 0 && runoutThreshold < 1e30))
     {
         FatalIOErrorInFunction(dict)
             << "runoutThreshold " << runoutThreshold << " must be > 0 [m]"
             << nl << exit(FatalIOError);
     }
-
-    Info<< "    " << n << " members (" << mode << ") of "
-        << flatOutput(listed) << nl
-        << "    thresholds " << flatOutput(thresholds) << " m, percentiles "
-        << flatOutput(percentiles) << ", runoutThreshold " << runoutThreshold
-        << " m" << nl << endl;
 }
 
 

@@ -27,6 +27,182 @@ bool close(const scalar a, const scalar b, const scalar scale)
     return mag(a - b) <= lengthTol*scale;
 }
 
+//- What savageHutterFoam needs of blockMeshDict, for the messages
+const char* const blockNeeds =
+    "savageHutterFoam needs one hex block of nx ny 1 uniform cells,"
+    " nx and ny positive integers:\n"
+    "    blocks ( hex (0 1 2 3 4 5 6 7) (nx ny 1)"
+    " simpleGrading (1 1 1) );\n"
+    "then blockMesh again";
+
+//- The mesh's coordinates, as blockMesh scales them (it ignores a factor
+//  <= 0): beyond 1e30 the scheme's products overflow
+void checkScale(const dictionary& dict, const fileName& file)
+{
+    for (const word key : {"convertToMeters", "scale"})
+    {
+        if (dict.found(key, keyType::LITERAL))
+        {
+            const scalar s = dict.get<scalar>(key);
+            if (!(mag(s) <= 1e30))
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Invalid " << key << " " << s << " in " << file
+                    << ": must be a finite number of magnitude at most"
+                    << " 1e30" << nl << exit(FatalIOError);
+            }
+        }
+    }
+}
+
+//- The cell counts of the hex block whose keyword hex is token `hex` of
+//  blocks: positive integers, one cell in z
+labelVector hexCounts
+(
+    const ITstream& blocks,
+    const label hex,
+    const dictionary& dict,
+    const fileName& file
+)
+{
+    labelVector n(labelVector::zero);
+    const auto punct = [&blocks](label i, token::punctuationToken p)
+    {
+        return i < blocks.size() && blocks[i].isPunctuation()
+            && blocks[i].pToken() == p;
+    };
+    // hex (8 vertices) [zone name] (nx ny nz) grading
+    label k = hex + 1;
+    bool ok = punct(k, token::BEGIN_LIST);
+    while (ok && ++k < blocks.size() && !punct(k, token::END_LIST))
+    {}
+    ok = ok && k < blocks.size();
+    ++k;
+    if
+    (
+        ok && k < blocks.size() && blocks[k].isWord()
+     && !blocks[k].wordToken().endsWith("Grading")
+    )
+    {
+        ++k;
+    }
+    ok = ok && punct(k, token::BEGIN_LIST) && punct(k + 4, token::END_LIST);
+    OStringStream counts;
+    bool valid = ok;
+    if (ok)
+    {
+        counts << "(";
+        for (label d = 0; d < 3; ++d)
+        {
+            const token& t = blocks[k + 1 + d];
+            counts << (d ? " " : "") << t;
+            if (t.isLabel() && t.labelToken() >= 1)
+            {
+                n[d] = t.labelToken();
+            }
+            else
+            {
+                valid = false;
+            }
+        }
+        counts << ")";
+    }
+    if (!valid)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Invalid cell counts "
+            << (ok ? counts.str().c_str() : "(not found)")
+            << " of the hex block in blocks of " << file << "." << nl
+            << blockNeeds << nl << exit(FatalIOError);
+    }
+    if (n[2] != 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "3D mesh: the hex block in blocks of " << file
+            << " has " << n[2] << " cells in z, cell counts "
+            << counts.str().c_str() << ".  savageHutterFoam needs"
+            << " exactly one cell in z (blockMesh: nx ny 1)." << nl
+            << exit(FatalIOError);
+    }
+    return n;
+}
+
+//- Every face along x, y or z: a block aligned with the axes
+void checkAxisAligned(const fvMesh& mesh)
+{
+    const vectorField& Sf = mesh.faceAreas();
+    forAll(Sf, facei)
+    {
+        const vector n = Sf[facei]/mag(Sf[facei]);
+        if (cmptMax(cmptMag(n)) < 1 - lengthTol)
+        {
+            FatalErrorInFunction
+                << "Face " << facei << " has normal " << n << ", not along"
+                << " x, y or z.  The block must be aligned with the axes:"
+                << " x downslope, y cross-slope, one cell in z." << nl
+                << exit(FatalError);
+        }
+    }
+}
+
+//- The widths in x and y of every cell, one uniform hexahedron per
+//  (i, j), full depth (span: the mesh's); the largest of all processors
+//  into wxMax, wyMax
+void uniformWidths
+(
+    const fvMesh& mesh,
+    const vector& span,
+    scalar& wxMax,
+    scalar& wyMax
+)
+{
+    const pointField& pts = mesh.points();
+    const labelListList& cellPoints = mesh.cellPoints();
+    scalar wxMin = VGREAT, wyMin = VGREAT;
+    wxMax = 0;
+    wyMax = 0;
+    forAll(cellPoints, c)
+    {
+        const labelList& cp = cellPoints[c];
+        if (cp.size() != 8 || mesh.cells()[c].size() != 6)
+        {
+            FatalErrorInFunction
+                << "Cell " << c << " is not a hexahedron.  savageHutterFoam"
+                << " needs one blockMesh hex block of nx ny 1 cells." << nl
+                << exit(FatalError);
+        }
+        const boundBox cb(pts, cp, false);
+        const vector w = cb.span();
+        if (!close(w.z(), span.z(), span.z()))
+        {
+            FatalErrorInFunction
+                << "3D mesh: cell " << c << " spans " << w.z() << " of the"
+                << " depth " << span.z() << " in z.  savageHutterFoam needs"
+                << " exactly one cell in z (blockMesh: nx ny 1)." << nl
+                << exit(FatalError);
+        }
+        wxMin = min(wxMin, w.x());
+        wxMax = max(wxMax, w.x());
+        wyMin = min(wyMin, w.y());
+        wyMax = max(wyMax, w.y());
+    }
+
+    reduce(wxMin, minOp<scalar>());
+    reduce(wxMax, maxOp<scalar>());
+    reduce(wyMin, minOp<scalar>());
+    reduce(wyMax, maxOp<scalar>());
+    if (!close(wxMin, wxMax, wxMax) || !close(wyMin, wyMax, wyMax))
+    {
+        FatalErrorInFunction
+            << "Graded or non-uniform mesh: cell widths range over"
+            << " [" << wxMin << ", " << wxMax << "] in x and"
+            << " [" << wyMin << ", " << wyMax << "] in y."
+            << "  savageHutterFoam needs uniform spacing"
+            << " (blockMesh: simpleGrading (1 1 1))." << nl
+            << exit(FatalError);
+    }
+}
+
 } // namespace
 
 
@@ -48,44 +224,17 @@ labelVector structuredMesh::readBlockCounts(const Time& runTime)
         }
         IFstream is(file);
         const dictionary dict(is);
-        const char* needs =
-            "savageHutterFoam needs one hex block of nx ny 1 uniform cells,"
-            " nx and ny positive integers:\n"
-            "    blocks ( hex (0 1 2 3 4 5 6 7) (nx ny 1)"
-            " simpleGrading (1 1 1) );\n"
-            "then blockMesh again";
-
-        // The mesh's coordinates, as blockMesh scales them (it ignores a
-        // factor <= 0): beyond 1e30 the scheme's products overflow
-        for (const word key : {"convertToMeters", "scale"})
-        {
-            if (dict.found(key, keyType::LITERAL))
-            {
-                const scalar s = dict.get<scalar>(key);
-                if (!(mag(s) <= 1e30))
-                {
-                    FatalIOErrorInFunction(dict)
-                        << "Invalid " << key << " " << s << " in " << file
-                        << ": must be a finite number of magnitude at most"
-                        << " 1e30" << nl << exit(FatalIOError);
-                }
-            }
-        }
+        checkScale(dict, file);
 
         if (!dict.found("blocks", keyType::LITERAL))
         {
             FatalIOErrorInFunction(dict)
-                << "No blocks in " << file << "." << nl << needs << nl
+                << "No blocks in " << file << "." << nl << blockNeeds << nl
                 << exit(FatalIOError);
         }
         ITstream& blocks = dict.lookup("blocks");
         label nHex = 0;
         labelVector n(labelVector::zero);
-        const auto punct = [&blocks](label i, token::punctuationToken p)
-        {
-            return i < blocks.size() && blocks[i].isPunctuation()
-                && blocks[i].pToken() == p;
-        };
         forAll(blocks, i)
         {
             if (!blocks[i].isWord() || blocks[i].wordToken() != "hex")
@@ -93,65 +242,13 @@ labelVector structuredMesh::readBlockCounts(const Time& runTime)
                 continue;
             }
             ++nHex;
-            // hex (8 vertices) [zone name] (nx ny nz) grading
-            label k = i + 1;
-            bool ok = punct(k, token::BEGIN_LIST);
-            while (ok && ++k < blocks.size() && !punct(k, token::END_LIST))
-            {}
-            ok = ok && k < blocks.size();
-            ++k;
-            if
-            (
-                ok && k < blocks.size() && blocks[k].isWord()
-             && !blocks[k].wordToken().endsWith("Grading")
-            )
-            {
-                ++k;
-            }
-            ok = ok && punct(k, token::BEGIN_LIST) && punct(k + 4, token::END_LIST);
-            OStringStream counts;
-            bool valid = ok;
-            if (ok)
-            {
-                counts << "(";
-                for (label d = 0; d < 3; ++d)
-                {
-                    const token& t = blocks[k + 1 + d];
-                    counts << (d ? " " : "") << t;
-                    if (t.isLabel() && t.labelToken() >= 1)
-                    {
-                        n[d] = t.labelToken();
-                    }
-                    else
-                    {
-                        valid = false;
-                    }
-                }
-                counts << ")";
-            }
-            if (!valid)
-            {
-                FatalIOErrorInFunction(dict)
-                    << "Invalid cell counts "
-                    << (ok ? counts.str().c_str() : "(not found)")
-                    << " of the hex block in blocks of " << file << "." << nl
-                    << needs << nl << exit(FatalIOError);
-            }
-            if (n[2] != 1)
-            {
-                FatalIOErrorInFunction(dict)
-                    << "3D mesh: the hex block in blocks of " << file
-                    << " has " << n[2] << " cells in z, cell counts "
-                    << counts.str().c_str() << ".  savageHutterFoam needs"
-                    << " exactly one cell in z (blockMesh: nx ny 1)." << nl
-                    << exit(FatalIOError);
-            }
+            n = hexCounts(blocks, i, dict, file);
         }
         if (nHex != 1)
         {
             FatalIOErrorInFunction(dict)
                 << "blockMeshDict " << file << " has " << nHex
-                << " blocks in blocks.  " << needs << nl
+                << " blocks in blocks.  " << blockNeeds << nl
                 << exit(FatalIOError);
         }
         return n;
@@ -160,27 +257,14 @@ labelVector structuredMesh::readBlockCounts(const Time& runTime)
 }
 
 
-structuredMesh::structuredMesh(const fvMesh& mesh)
-:
-    nx_(0),
-    ny_(0),
-    dx_(0),
-    dy_(0),
-    xMin_(0),
-    yMin_(0),
-    xMax_(0),
-    yMax_(0),
-    nxWhole_(0),
-    nyWhole_(0),
-    i0_(0),
-    j0_(0),
-    neighbour_(-1),
-    sidePatches_(4)
+void structuredMesh::checkCellCount
+(
+    const fvMesh& mesh,
+    const label nCellsWhole
+) const
 {
     const bool parallel = Pstream::parRun();
-    const label nCells = mesh.nCells();
-    const label nCellsWhole = returnReduce(nCells, sumOp<label>());
-    if (nCells == 0)
+    if (mesh.nCells() == 0)
     {
         FatalErrorInFunction << "The mesh has no cells" << nl
             << (parallel ? refusedSplit() : std::string()).c_str()
@@ -203,24 +287,17 @@ structuredMesh::structuredMesh(const fvMesh& mesh)
             << " again after an edit).  Run blockMesh." << nl
             << exit(FatalError);
     }
+}
 
-    // Every face along x, y or z: a block aligned with the axes
-    const vectorField& Sf = mesh.faceAreas();
-    forAll(Sf, facei)
-    {
-        const vector n = Sf[facei]/mag(Sf[facei]);
-        if (cmptMax(cmptMag(n)) < 1 - lengthTol)
-        {
-            FatalErrorInFunction
-                << "Face " << facei << " has normal " << n << ", not along"
-                << " x, y or z.  The block must be aligned with the axes:"
-                << " x downslope, y cross-slope, one cell in z." << nl
-                << exit(FatalError);
-        }
-    }
 
-    const pointField& pts = mesh.points();
-    const boundBox bb(pts, false);
+void structuredMesh::setGrid
+(
+    const fvMesh& mesh,
+    const boundBox& bb,
+    const label nCellsWhole
+)
+{
+    const label nCells = mesh.nCells();
     const vector span = bb.span();
     // The whole grid's box: the same points as the serial run's, reduced
     const vector wholeMin
@@ -235,53 +312,8 @@ structuredMesh::structuredMesh(const fvMesh& mesh)
         returnReduce(bb.max().y(), maxOp<scalar>()),
         0
     );
-    const labelListList& cellPoints = mesh.cellPoints();
-
-    // Widths of every cell: one uniform hexahedron per (i, j), full depth
-    scalarField wx(nCells), wy(nCells);
-    scalar wxMin = VGREAT, wxMax = 0, wyMin = VGREAT, wyMax = 0;
-    forAll(cellPoints, c)
-    {
-        const labelList& cp = cellPoints[c];
-        if (cp.size() != 8 || mesh.cells()[c].size() != 6)
-        {
-            FatalErrorInFunction
-                << "Cell " << c << " is not a hexahedron.  savageHutterFoam"
-                << " needs one blockMesh hex block of nx ny 1 cells." << nl
-                << exit(FatalError);
-        }
-        const boundBox cb(pts, cp, false);
-        const vector w = cb.span();
-        if (!close(w.z(), span.z(), span.z()))
-        {
-            FatalErrorInFunction
-                << "3D mesh: cell " << c << " spans " << w.z() << " of the"
-                << " depth " << span.z() << " in z.  savageHutterFoam needs"
-                << " exactly one cell in z (blockMesh: nx ny 1)." << nl
-                << exit(FatalError);
-        }
-        wx[c] = w.x();
-        wy[c] = w.y();
-        wxMin = min(wxMin, w.x());
-        wxMax = max(wxMax, w.x());
-        wyMin = min(wyMin, w.y());
-        wyMax = max(wyMax, w.y());
-    }
-
-    reduce(wxMin, minOp<scalar>());
-    reduce(wxMax, maxOp<scalar>());
-    reduce(wyMin, minOp<scalar>());
-    reduce(wyMax, maxOp<scalar>());
-    if (!close(wxMin, wxMax, wxMax) || !close(wyMin, wyMax, wyMax))
-    {
-        FatalErrorInFunction
-            << "Graded or non-uniform mesh: cell widths range over"
-            << " [" << wxMin << ", " << wxMax << "] in x and"
-            << " [" << wyMin << ", " << wyMax << "] in y."
-            << "  savageHutterFoam needs uniform spacing"
-            << " (blockMesh: simpleGrading (1 1 1))." << nl
-            << exit(FatalError);
-    }
+    scalar wxMax, wyMax;
+    uniformWidths(mesh, span, wxMax, wyMax);
 
     // The whole grid as the serial run forms it (span / count)
     const scalar wholeSpanX = wholeMax.x() - wholeMin.x();
@@ -317,7 +349,13 @@ structuredMesh::structuredMesh(const fvMesh& mesh)
             << " x " << nyWhole_ << " block: its part is not a rectangle."
             << nl << refusedSplit().c_str() << exit(FatalError);
     }
+}
 
+
+void structuredMesh::mapCells(const fvMesh& mesh, const boundBox& bb)
+{
+    const label nCells = mesh.nCells();
+    const vector span = bb.span();
     // Axis-aligned boxes, each grid cell exactly once
     const vectorField& C = mesh.C().primitiveField();
     gridIndex_.setSize(nCells);
@@ -352,12 +390,17 @@ structuredMesh::structuredMesh(const fvMesh& mesh)
         meshCell[k] = c;
         gridIndex_[c] = k;
     }
+}
 
-    // Boundary faces: front/back in empty patches, the rest on the sides
+
+void structuredMesh::findSidePatches
+(
+    const fvMesh& mesh,
+    List<FixedList<label, 4>>& procFaces
+)
+{
     const polyBoundaryMesh& patches = mesh.boundaryMesh();
     List<DynamicList<label>> onSide(4);
-    // Faces of each processor patch on each side
-    List<FixedList<label, 4>> procFaces(patches.size(), FixedList<label, 4>(0));
     forAll(patches, patchi)
     {
         const polyPatch& pp = patches[patchi];
@@ -405,9 +448,18 @@ structuredMesh::structuredMesh(const fvMesh& mesh)
     {
         sidePatches_[s].transfer(onSide[s]);
     }
+}
 
+
+void structuredMesh::findNeighbours
+(
+    const fvMesh& mesh,
+    const List<FixedList<label, 4>>& procFaces
+)
+{
     // Processor patches: each one whole side of this rectangle, toward a
     // side of the part that lies inside the whole grid
+    const polyBoundaryMesh& patches = mesh.boundaryMesh();
     forAll(patches, patchi)
     {
         if (!isA<processorPolyPatch>(patches[patchi]))
@@ -457,6 +509,44 @@ structuredMesh::structuredMesh(const fvMesh& mesh)
                 << exit(FatalError);
         }
     }
+}
+
+
+structuredMesh::structuredMesh(const fvMesh& mesh)
+:
+    nx_(0),
+    ny_(0),
+    dx_(0),
+    dy_(0),
+    xMin_(0),
+    yMin_(0),
+    xMax_(0),
+    yMax_(0),
+    nxWhole_(0),
+    nyWhole_(0),
+    i0_(0),
+    j0_(0),
+    neighbour_(-1),
+    sidePatches_(4)
+{
+    const label nCellsWhole = returnReduce(mesh.nCells(), sumOp<label>());
+    checkCellCount(mesh, nCellsWhole);
+    checkAxisAligned(mesh);
+
+    // The grid from the bounding box and the cell widths, each mesh cell
+    // mapped to its grid cell
+    const boundBox bb(mesh.points(), false);
+    setGrid(mesh, bb, nCellsWhole);
+    mapCells(mesh, bb);
+
+    // Boundary faces: front/back in empty patches, the rest on the sides;
+    // the faces of each processor patch on each side give the neighbours
+    List<FixedList<label, 4>> procFaces
+    (
+        mesh.boundaryMesh().size(), FixedList<label, 4>(0)
+    );
+    findSidePatches(mesh, procFaces);
+    findNeighbours(mesh, procFaces);
 }
 
 

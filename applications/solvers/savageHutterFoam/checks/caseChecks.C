@@ -252,6 +252,66 @@ void avalancheCase::checkDimensions
 }
 
 
+void avalancheCase::checkCell(const label c) const
+{
+    // Magnitudes beyond 1e30 overflow in the scheme's squares; speeds
+    // are bounded by maxInputSpeed (boundaryConditions.H)
+    const scalar big = 1e30;
+    if (!(h[c] >= 0 && h[c] <= big))
+    {
+        FatalIOErrorInFunction(h.objectPath())
+            << "h = " << h[c] << " in cell " << c << " at "
+            << mesh.C()[c] << ": the thickness must be finite,"
+            << " >= 0 and at most 1e30" << nl << exit(FatalIOError);
+    }
+    if
+    (
+        !(
+            mag(U[c].x()) <= big && mag(U[c].y()) <= big
+         && mag(U[c].z()) <= big
+         )
+     || !(mag(U[c]) <= maxInputSpeed)
+    )
+    {
+        FatalIOErrorInFunction(U.objectPath())
+            << "U = " << U[c] << " in cell " << c << " at "
+            << mesh.C()[c] << ": must be finite, of magnitude at"
+            << " most " << label(maxInputSpeed)
+            << " m/s (the speed of light)" << nl
+            << exit(FatalIOError);
+    }
+    if (hasMomentum)
+    {
+        // The speed |hU|/h of a cell with h > 0 (a cell with h = 0
+        // has no velocity, physics/reconstruction.H)
+        const vector& m = hU[c];
+        if
+        (
+            !(
+                mag(m.x()) <= big && mag(m.y()) <= big
+             && mag(m.z()) <= big
+             )
+         || !(mag(m) <= maxInputSpeed*h[c] || h[c] == 0)
+        )
+        {
+            FatalIOErrorInFunction(hU.objectPath())
+                << "hU = " << m << " in cell " << c << " with h = "
+                << h[c] << ": must be finite, the speed |hU|/h at"
+                << " most " << label(maxInputSpeed)
+                << " m/s (the speed of light)" << nl
+                << exit(FatalIOError);
+        }
+    }
+    if (!(mag(zb[c]) <= big))
+    {
+        FatalIOErrorInFunction(zb.objectPath())
+            << "zb = " << zb[c] << " in cell " << c
+            << ": must be finite, of magnitude at most 1e30" << nl
+            << exit(FatalIOError);
+    }
+}
+
+
 void avalancheCase::checkInitialFields() const
 {
     checkDimensions(h, h.dimensions(), dimLength, "m");
@@ -272,63 +332,10 @@ void avalancheCase::checkInitialFields() const
     {
         checkDimensions(UMax, UMax.dimensions(), dimVelocity, "m/s");
     }
-    // Magnitudes beyond 1e30 overflow in the scheme's squares; speeds
-    // are bounded by maxInputSpeed (boundaryConditions.H)
-    const scalar big = 1e30;
+    // Cell by cell, each cell's h, U, hU and zb
     forAll(h, c)
     {
-        if (!(h[c] >= 0 && h[c] <= big))
-        {
-            FatalIOErrorInFunction(h.objectPath())
-                << "h = " << h[c] << " in cell " << c << " at "
-                << mesh.C()[c] << ": the thickness must be finite,"
-                << " >= 0 and at most 1e30" << nl << exit(FatalIOError);
-        }
-        if
-        (
-            !(
-                mag(U[c].x()) <= big && mag(U[c].y()) <= big
-             && mag(U[c].z()) <= big
-             )
-         || !(mag(U[c]) <= maxInputSpeed)
-        )
-        {
-            FatalIOErrorInFunction(U.objectPath())
-                << "U = " << U[c] << " in cell " << c << " at "
-                << mesh.C()[c] << ": must be finite, of magnitude at"
-                << " most " << label(maxInputSpeed)
-                << " m/s (the speed of light)" << nl
-                << exit(FatalIOError);
-        }
-        if (hasMomentum)
-        {
-            // The speed |hU|/h of a cell with h > 0 (a cell with h = 0
-            // has no velocity, physics/reconstruction.H)
-            const vector& m = hU[c];
-            if
-            (
-                !(
-                    mag(m.x()) <= big && mag(m.y()) <= big
-                 && mag(m.z()) <= big
-                 )
-             || !(mag(m) <= maxInputSpeed*h[c] || h[c] == 0)
-            )
-            {
-                FatalIOErrorInFunction(hU.objectPath())
-                    << "hU = " << m << " in cell " << c << " with h = "
-                    << h[c] << ": must be finite, the speed |hU|/h at"
-                    << " most " << label(maxInputSpeed)
-                    << " m/s (the speed of light)" << nl
-                    << exit(FatalIOError);
-            }
-        }
-        if (!(mag(zb[c]) <= big))
-        {
-            FatalIOErrorInFunction(zb.objectPath())
-                << "zb = " << zb[c] << " in cell " << c
-                << ": must be finite, of magnitude at most 1e30" << nl
-                << exit(FatalIOError);
-        }
+        checkCell(c);
     }
     if (hasPeaks)
     {

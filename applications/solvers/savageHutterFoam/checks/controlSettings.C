@@ -199,25 +199,20 @@ bool onOff(const dictionary& cd, const word& key, const bool deflt)
     return deflt;
 }
 
-} // namespace
+//- Times beyond 1e30 overflow the progress arithmetic (fractions, ETA)
+const range anyTime{-1e30, 1e30, true, true, false};
 
+const range positive{0, inf, true, true, false};
 
-controlSettings controlSettings::read
-(
-    const dictionary& cd,
-    const bool running
-)
+//- startFrom, startTime, stopAt, endTime
+void readStartStop(const dictionary& cd, controlSettings& c)
 {
-    controlSettings c;
-
     c.startFrom = choice
     (
         cd, "startFrom", {"firstTime", "startTime", "latestTime"},
         "latestTime"
     );
     const scalar zero = 0;
-    // Times beyond 1e30 overflow the progress arithmetic (fractions, ETA)
-    const range anyTime{-1e30, 1e30, true, true, false};
     c.startTime = number
     (
         cd, "startTime", anyTime, c.startFrom == "startTime" ? nullptr : &zero,
@@ -230,8 +225,11 @@ controlSettings controlSettings::read
         "endTime"
     );
     c.endTime = number(cd, "endTime", anyTime, nullptr, "the time to stop at");
+}
 
-    const range positive{0, inf, true, true, false};
+//- deltaT, adjustTimeStep, maxCo, maxDeltaT
+void readTimeStep(const dictionary& cd, controlSettings& c)
+{
     c.deltaT = number
     (
         cd, "deltaT", positive, nullptr,
@@ -249,7 +247,11 @@ controlSettings controlSettings::read
     (
         cd, "maxDeltaT", positive, &great, "the largest time step"
     );
+}
 
+//- writeControl, writeInterval, purgeWrite
+void readWrites(const dictionary& cd, controlSettings& c)
+{
     c.writeControl = choice
     (
         cd, "writeControl",
@@ -282,6 +284,7 @@ controlSettings controlSettings::read
         " written nearly every step"
       : std::string("time between writes")
     );
+    const scalar zero = 0;
     c.purgeWrite = label
     (
         number
@@ -290,7 +293,11 @@ controlSettings controlSettings::read
             "the number of time directories kept, 0: all"
         )
     );
+}
 
+//- The entries of the written files' format, checked only
+void checkFormat(const dictionary& cd)
+{
     // 17 significant digits tell every double apart: more only print
     // the binary expansion's noise (in field files and directory names)
     const scalar six = 6;
@@ -313,6 +320,23 @@ controlSettings controlSettings::read
         "off"
     );
     choice(cd, "timeFormat", {"general", "fixed", "scientific"}, "general");
+}
+
+} // namespace
+
+
+controlSettings controlSettings::read
+(
+    const dictionary& cd,
+    const bool running
+)
+{
+    controlSettings c;
+
+    readStartStop(cd, c);
+    readTimeStep(cd, c);
+    readWrites(cd, c);
+    checkFormat(cd);
     c.runTimeModifiable = onOff(cd, "runTimeModifiable", false);
 
     if (c.stopAt != "endTime" && !running)

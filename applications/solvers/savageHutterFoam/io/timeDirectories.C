@@ -361,19 +361,8 @@ atomicWriter::atomicWriter
 {}
 
 
-void atomicWriter::write()
+void atomicWriter::writeStaged(const fileName& staged)
 {
-    const fileName caseDir =
-        within_.empty() ? runTime_.path() : runTime_.path()/within_;
-    const fileName staging = caseDir/stagingDirName;
-    const word name = runTime_.timeName();
-    const fileName staged = staging/name;
-    const fileName target = caseDir/name;
-    if (isDir(staged, false))
-    {
-        rmDir(staged);
-    }
-
     // Time writes under path() = rootPath()/caseName()
     fileName& caseName = runTime_.caseName();
     const fileName realCase = caseName;
@@ -408,16 +397,30 @@ void atomicWriter::write()
         failed("write", staged, why);
     }
     syncTree(staged);
+}
 
-    // A directory of that name from an earlier run (a restart from an
-    // earlier time) is replaced.  rename() does not replace a non-empty
-    // directory: the two are swapped in one step, after which the old one
-    // lies in the staging directory, so that <time> is at every moment the
-    // old directory or the new one, both complete.  Where the file system
-    // cannot swap, the old one is moved aside first, a second SIGTERM/SIGINT
-    // held back over the two renames; a run killed between them leaves it
-    // as <time>.replaced, which the next start moves back
-    // (removeIncompleteWrites).
+
+namespace
+{
+
+//- staging/name renamed to caseDir/name.  A directory of that name from
+//  an earlier run (a restart from an earlier time) is replaced.  rename()
+//  does not replace a non-empty directory: the two are swapped in one
+//  step, after which the old one lies in the staging directory, so that
+//  <time> is at every moment the old directory or the new one, both
+//  complete.  Where the file system cannot swap, the old one is moved
+//  aside first, a second SIGTERM/SIGINT held back over the two renames; a
+//  run killed between them leaves it as <time>.replaced, which the next
+//  start moves back (restoreReplaced).
+void moveIntoPlace
+(
+    const fileName& caseDir,
+    const fileName& staging,
+    const word& name
+)
+{
+    const fileName staged = staging/name;
+    const fileName target = caseDir/name;
     if (isDir(target, false))
     {
         if (exchange(staged, target))
@@ -442,6 +445,25 @@ void atomicWriter::write()
         renameOrFail(staged, target);
         syncPath(caseDir);
     }
+}
+
+} // namespace
+
+
+void atomicWriter::write()
+{
+    const fileName caseDir =
+        within_.empty() ? runTime_.path() : runTime_.path()/within_;
+    const fileName staging = caseDir/stagingDirName;
+    const word name = runTime_.timeName();
+    const fileName staged = staging/name;
+    if (isDir(staged, false))
+    {
+        rmDir(staged);
+    }
+
+    writeStaged(staged);
+    moveIntoPlace(caseDir, staging, name);
     ::rmdir(staging.c_str());
 
     written_.push(name);

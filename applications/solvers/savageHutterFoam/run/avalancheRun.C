@@ -64,6 +64,38 @@ avalancheRun<Real>::avalancheRun
     // nothing is written
     endIfSignalled("setting up the backend");
 
+    readWriteGrid();
+
+    solver_->setTime(t0_);
+    solver_->setMaxDt(ac_.input.maxDeltaT);
+    solver_->setInterrupt(&runSignals::pending);
+    checkFirstStep();
+
+    Info<< "Backend: " << solver_->name().c_str() << ", "
+        << (sizeof(Real) == 8 ? "double" : "single") << " precision" << nl;
+
+    const sh::Diagnostics d0 = solver_->diagnostics();
+    Info<< "Initial volume " << d0.volume << " m^3, " << d0.wetCells
+        << " wet cells, hMax " << d0.hMax << " m" << nl << nl
+        << "Starting time loop" << nl << endl;
+
+    functions_.start();
+    if (functions_.size())
+    {
+        Info<< "Function objects: " << functions_.size() << ", executed at"
+            << " every write time" << nl << endl;
+    }
+
+    solver_->getState(hPrev_, hus_, hvs_);
+    start_ = lastLog_ = lastWrite_ = lastCheck_ = wallClock::now();
+}
+
+
+// * * * * * * * * * * * * * * * * Stages  * * * * * * * * * * * * * * * * //
+
+template<class Real>
+void avalancheRun<Real>::readWriteGrid()
+{
     // The write times: k writeInterval from the origin of the run that
     // wrote the start time, so that a restart from a time written on a
     // signal keeps its grid; else from 0 when the start time lies on that
@@ -101,33 +133,8 @@ avalancheRun<Real>::avalancheRun
             << runTime_.timeName() << ": " << origin_ << " + k " << w << nl;
     }
     writeGrid_.set("origin", origin_);
-
-    solver_->setTime(t0_);
-    solver_->setMaxDt(ac_.input.maxDeltaT);
-    solver_->setInterrupt(&runSignals::pending);
-    checkFirstStep();
-
-    Info<< "Backend: " << solver_->name().c_str() << ", "
-        << (sizeof(Real) == 8 ? "double" : "single") << " precision" << nl;
-
-    const sh::Diagnostics d0 = solver_->diagnostics();
-    Info<< "Initial volume " << d0.volume << " m^3, " << d0.wetCells
-        << " wet cells, hMax " << d0.hMax << " m" << nl << nl
-        << "Starting time loop" << nl << endl;
-
-    functions_.start();
-    if (functions_.size())
-    {
-        Info<< "Function objects: " << functions_.size() << ", executed at"
-            << " every write time" << nl << endl;
-    }
-
-    solver_->getState(hPrev_, hus_, hvs_);
-    start_ = lastLog_ = lastWrite_ = lastCheck_ = wallClock::now();
 }
 
-
-// * * * * * * * * * * * * * * * * Stages  * * * * * * * * * * * * * * * * //
 
 template<class Real>
 bool avalancheRun<Real>::advance()

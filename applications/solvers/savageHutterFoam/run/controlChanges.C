@@ -16,22 +16,8 @@ namespace Foam
 {
 
 template<class Real>
-bool avalancheRun<Real>::readControlIfModified()
+bool avalancheRun<Real>::readChangedControl(controlSettings& c) const
 {
-    lastCheck_ = wallClock::now();
-    const double stamp = highResLastModified(controlDictPath_);
-    if
-    (
-        !anyProcessor
-        (
-            ac_.input.control.runTimeModifiable && stamp != controlStamp_
-        )
-    )
-    {
-        return false;
-    }
-    controlStamp_ = stamp;
-    controlSettings c;
     const bool ioThrows = FatalIOError.throwExceptions();
     const bool throws = FatalError.throwExceptions();
     bool valid = true;
@@ -50,64 +36,61 @@ bool avalancheRun<Real>::readControlIfModified()
     }
     FatalIOError.throwExceptions(ioThrows);
     FatalError.throwExceptions(throws);
-    // Decomposed: every processor read the same file (one edited between
-    // their reads is read again at the next look)
-    if (Pstream::parRun())
+    return valid;
+}
+
+
+template<class Real>
+bool avalancheRun<Real>::controlDiffers(const controlSettings& c) const
+{
+    // Every setting the run acts on, as numbers
+    const wordList controls
+    ({
+        "timeStep", "runTime", "adjustableRunTime", "clockTime",
+        "cpuTime", "endTime", "writeNow", "noWriteNow", "nextWrite"
+    });
+    const auto differs = [](const scalar x)
     {
-        valid = !anyProcessor(!valid);
-        // Every setting the run acts on, as numbers
-        const wordList controls
-        ({
-            "timeStep", "runTime", "adjustableRunTime", "clockTime",
-            "cpuTime", "endTime", "writeNow", "noWriteNow", "nextWrite"
-        });
-        const auto differs = [](const scalar x)
-        {
-            return returnReduce(x, minOp<scalar>())
-                != returnReduce(x, maxOp<scalar>());
-        };
-        if
-        (
-            valid
-         && (
-                differs(c.endTime) || differs(c.writeInterval)
-             || differs(controls.find(c.writeControl))
-             || differs(controls.find(c.stopAt))
-             || differs(c.runTimeModifiable)
-            )
-        )
-        {
-            controlStamp_ = -1;
-            return false;
-        }
-    }
-    if (valid)
+        return returnReduce(x, minOp<scalar>())
+            != returnReduce(x, maxOp<scalar>());
+    };
+    return
+        differs(c.endTime) || differs(c.writeInterval)
+     || differs(controls.find(c.writeControl))
+     || differs(controls.find(c.stopAt))
+     || differs(c.runTimeModifiable);
+}
+
+
+template<class Real>
+bool avalancheRun<Real>::controlStepsValid(const controlSettings& c) const
+{
+    // The new endTime and writes from here, at the steps of the start
+    const double t = solver_->time();
+    const bool onGrid =
+        c.writeControl == "adjustableRunTime"
+     || c.writeControl == "runTime";
+    const std::string why = stepsProblem
+    (
+        t, c.endTime, c.writeControl, c.writeInterval,
+        onGrid ? t + c.writeInterval : c.endTime
+    );
+    if (!why.empty())
     {
-        // The new endTime and writes from here, at the steps of the start
-        const double t = solver_->time();
-        const bool onGrid =
-            c.writeControl == "adjustableRunTime"
-         || c.writeControl == "runTime";
-        const std::string why = stepsProblem
-        (
-            t, c.endTime, c.writeControl, c.writeInterval,
-            onGrid ? t + c.writeInterval : c.endTime
-        );
-        if (!why.empty())
-        {
-            valid = false;
-            Warning
-                << nl << "controlDict changed at t = " << t << " but is"
-                << " invalid; the run goes on as before:" << nl
-                << why.c_str() << nl << "file: " << controlDictPath_ << nl
-                << endl;
-        }
-    }
-    if (!valid)
-    {
+        Warning
+            << nl << "controlDict changed at t = " << t << " but is"
+            << " invalid; the run goes on as before:" << nl
+            << why.c_str() << nl << "file: " << controlDictPath_ << nl
+            << endl;
         return false;
     }
+    return true;
+}
 
+
+template<class Real>
+void avalancheRun<Real>::applyControl(const controlSettings& c)
+{
     controlSettings& now = ac_.input.control;
     Info<< nl << "controlDict changed at t = " << solver_->time() << ":";
     if (c.endTime != endTime_)
@@ -149,7 +132,12 @@ bool avalancheRun<Real>::readControlIfModified()
     now.writeInterval = c.writeInterval;
     now.stopAt = c.stopAt;
     now.runTimeModifiable = c.runTimeModifiable;
+}
 
+
+template<class Real>
+bool avalancheRun<Real>::stopOnControl(const controlSettings& c)
+{
     stopAtNextWrite_ = c.stopAt == "nextWrite";
     if (c.stopAt == "noWriteNow")
     {
@@ -166,6 +154,49 @@ bool avalancheRun<Real>::readControlIfModified()
         return true;
     }
     return false;
+}
+
+
+template<class Real>
+bool avalancheRun<Real>::readControlIfModified()
+{
+    lastCheck_ = wallClock::now();
+    const double stamp = highResLastModified(controlDictPath_);
+    if
+    (
+        !anyProcessor
+        (
+            ac_.input.control.runTimeModifiable && stamp != controlStamp_
+        )
+    )
+    {
+        return false;
+    }
+    controlStamp_ = stamp;
+    controlSettings c;
+    bool valid = readChangedControl(c);
+    // Decomposed: every processor read the same file (one edited between
+    // their reads is read again at the next look)
+    if (Pstream::parRun())
+    {
+        valid = !anyProcessor(!valid);
+        if (valid && controlDiffers(c))
+        {
+            controlStamp_ = -1;
+            return false;
+        }
+    }
+    if (valid)
+    {
+        valid = controlStepsValid(c);
+    }
+    if (!valid)
+    {
+        return false;
+    }
+
+    applyControl(c);
+    return stopOnControl(c);
 }
 
 // * * * * * * * * * * * * * * Instantiations  * * * * * * * * * * * * * * //

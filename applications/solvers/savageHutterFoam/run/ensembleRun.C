@@ -211,13 +211,18 @@ void ensembleRun<Real>::writeMembers()
 
 
 template<class Real>
-void ensembleRun<Real>::writeStatistics()
+void ensembleRun<Real>::peakValues
+(
+    std::vector<double>& hv,
+    std::vector<double>& uv,
+    std::vector<double>& pv
+) const
 {
     const label nc = ac_.h.size();
     const bool pressure = ac_.pMax.valid();
-    // Per cell the members' values (member fastest)
-    std::vector<double> hv(std::size_t(nc)*n_), uv(hv.size());
-    std::vector<double> pv(pressure ? hv.size() : 0);
+    hv.assign(std::size_t(nc)*n_, 0);
+    uv.assign(hv.size(), 0);
+    pv.assign(pressure ? hv.size() : 0, 0);
     for (label k = 0; k < n_; ++k)
     {
         const sh::PeakMaps<Real> p = solver_->peakMaps(k);
@@ -233,66 +238,61 @@ void ensembleRun<Real>::writeStatistics()
             }
         }
     }
+}
 
-    PtrList<volScalarField> fields;
-    const auto field = [&](const word& name, const dimensionSet& dims)
-    {
-        fields.append
+
+namespace
+{
+
+//- A statistic's field name: prefix and x as "%g"
+word named(const char* prefix, const scalar x)
+{
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%s%g", prefix, x);
+    return word(buf);
+}
+
+} // namespace
+
+
+template<class Real>
+label ensembleRun<Real>::addField
+(
+    PtrList<volScalarField>& fields,
+    const word& name,
+    const dimensionSet& dims
+) const
+{
+    fields.append
+    (
+        new volScalarField
         (
-            new volScalarField
+            IOobject
             (
-                IOobject
-                (
-                    name, runTime_.timeName(), ac_.mesh,
-                    IOobject::NO_READ, IOobject::AUTO_WRITE
-                ),
-                ac_.mesh,
-                dimensionedScalar(name, dims, 0),
-                "zeroGradient"
-            )
-        );
-        return fields.size() - 1;
-    };
-    const auto named = [](const char* prefix, const scalar x)
-    {
-        char buf[64];
-        std::snprintf(buf, sizeof buf, "%s%g", prefix, x);
-        return word(buf);
-    };
-    std::vector<double> v(n_);
-    const auto summarise =
-        [&](const std::vector<double>& all, const word& name,
-            const dimensionSet& dims)
-    {
-        const label mean = field(name + "Mean", dims);
-        List<label> pct(ens_.percentiles.size());
-        forAll(pct, q)
-        {
-            pct[q] = field(named((name + "P").c_str(), ens_.percentiles[q]), dims);
-        }
-        for (label c = 0; c < nc; ++c)
-        {
-            double sum = 0;
-            for (label k = 0; k < n_; ++k)
-            {
-                v[k] = all[std::size_t(c)*n_ + k];
-                sum += v[k];
-            }
-            fields[mean][c] = sum/n_;
-            std::sort(v.begin(), v.end());
-            forAll(pct, q)
-            {
-                const double r = ens_.percentiles[q]/100*(n_ - 1);
-                const label lo = std::min(label(std::floor(r)), n_ - 1);
-                const label hi = std::min(lo + 1, n_ - 1);
-                fields[pct[q]][c] = v[lo] + (r - lo)*(v[hi] - v[lo]);
-            }
-        }
-    };
+                name, runTime_.timeName(), ac_.mesh,
+                IOobject::NO_READ, IOobject::AUTO_WRITE
+            ),
+            ac_.mesh,
+            dimensionedScalar(name, dims, 0),
+            "zeroGradient"
+        )
+    );
+    return fields.size() - 1;
+}
+
+
+template<class Real>
+void ensembleRun<Real>::addExceedances
+(
+    PtrList<volScalarField>& fields,
+    const std::vector<double>& hv
+) const
+{
+    const label nc = ac_.h.size();
     forAll(ens_.thresholds, q)
     {
         const scalar thr = ens_.thresholds[q];
-        const label f = field(named("hMaxExceedance_", thr), dimless);
+        const label f = addField(fields, named("hMaxExceedance_", thr), dimless);
         for (label c = 0; c < nc; ++c)
         {
             label above = 0;
@@ -303,11 +303,61 @@ void ensembleRun<Real>::writeStatistics()
             fields[f][c] = scalar(above)/n_;
         }
     }
-    summarise(hv, "hMax", dimLength);
-    summarise(uv, "UMax", dimVelocity);
-    if (pressure)
+}
+
+
+template<class Real>
+void ensembleRun<Real>::addSummary
+(
+    PtrList<volScalarField>& fields,
+    const std::vector<double>& all,
+    const word& name,
+    const dimensionSet& dims
+) const
+{
+    const label nc = ac_.h.size();
+    std::vector<double> v(n_);
+    const label mean = addField(fields, name + "Mean", dims);
+    List<label> pct(ens_.percentiles.size());
+    forAll(pct, q)
     {
-        summarise(pv, "pMax", dimPressure);
+        pct[q] = addField(fields, named((name + "P").c_str(), ens_.percentiles[q]), dims);
+    }
+    for (label c = 0; c < nc; ++c)
+    {
+        double sum = 0;
+        for (label k = 0; k < n_; ++k)
+        {
+            v[k] = all[std::size_t(c)*n_ + k];
+            sum += v[k];
+        }
+        fields[mean][c] = sum/n_;
+        std::sort(v.begin(), v.end());
+        forAll(pct, q)
+        {
+            const double r = ens_.percentiles[q]/100*(n_ - 1);
+            const label lo = std::min(label(std::floor(r)), n_ - 1);
+            const label hi = std::min(lo + 1, n_ - 1);
+            fields[pct[q]][c] = v[lo] + (r - lo)*(v[hi] - v[lo]);
+        }
+    }
+}
+
+
+template<class Real>
+void ensembleRun<Real>::writeStatistics()
+{
+    // Per cell the members' values (member fastest)
+    std::vector<double> hv, uv, pv;
+    peakValues(hv, uv, pv);
+
+    PtrList<volScalarField> fields;
+    addExceedances(fields, hv);
+    addSummary(fields, hv, "hMax", dimLength);
+    addSummary(fields, uv, "UMax", dimVelocity);
+    if (ac_.pMax.valid())
+    {
+        addSummary(fields, pv, "pMax", dimPressure);
     }
     for (volScalarField& f : fields)
     {
@@ -465,19 +515,7 @@ void ensembleRun<Real>::writeReport()
 
 
 template<class Real>
-ensembleRun<Real>::ensembleRun
-(
-    avalancheCase& ac,
-    const word& backend,
-    const scalar logInterval
-)
-:
-    ac_(ac),
-    runTime_(ac.runTime),
-    ens_(ac.runTime, ac.input),
-    logInterval_(logInterval),
-    n_(ens_.members.size()),
-    startName_(ac.runTime.timeName())
+void ensembleRun<Real>::checkOptions() const
 {
     if (Pstream::parRun())
     {
@@ -504,10 +542,12 @@ ensembleRun<Real>::ensembleRun
             << "Valid choices with -ensemble: (adjustableRunTime runTime)"
             << nl << exit(FatalIOError);
     }
+}
 
-    // What a run killed while writing left (timeDirectories.H): a
-    // directory it was replacing back in place, the incomplete ones
-    // removed; before the restart looks for the members' times
+
+template<class Real>
+void ensembleRun<Real>::restoreKilledWrites() const
+{
     for (label k = 0; k <= n_; ++k)
     {
         const fileName dir = k < n_
@@ -523,9 +563,12 @@ ensembleRun<Real>::ensembleRun
             rmDir(dir/stagingDirName);
         }
     }
+}
 
-    // Restart from the members' latest common time, or start
-    word restartName;
+
+template<class Real>
+scalar ensembleRun<Real>::startPoint(word& restartName) const
+{
     const scalar tRestart =
         ac_.input.control.startFrom == "latestTime"
       ? restartTime(restartName) : -1;
@@ -547,6 +590,46 @@ ensembleRun<Real>::ensembleRun
             << " with startFrom startTime (which replaces it)" << nl
             << exit(FatalError);
     }
+    return tRestart;
+}
+
+
+template<class Real>
+void ensembleRun<Real>::checkSameMember(const label k) const
+{
+    const IOdictionary had
+    (
+        IOobject
+        (
+            "parameters", memberDir(k), runTime_,
+            IOobject::MUST_READ, IOobject::NO_WRITE, false
+        )
+    );
+    dictionary now = ens_.memberDict(k);
+    OStringStream a, b;
+    a.precision(17);
+    b.precision(17);
+    for (const entry& e : now) { a << e; }
+    for (const entry& e : had) { if (e.keyword() != "FoamFile") b << e; }
+    if (a.str() != b.str())
+    {
+        FatalErrorInFunction
+            << "ensemble/ holds another ensemble: "
+            << memberDir(k) << "/parameters differs from what"
+            << " ensembleDict makes of member " << k << nl
+            << "Remove ensemble/ (or move it away) to start the"
+            << " new ensemble" << nl << exit(FatalError);
+    }
+}
+
+
+template<class Real>
+void ensembleRun<Real>::setUpMembers
+(
+    const scalar tRestart,
+    const word& restartName
+)
+{
     const sh::Problem<Real> base = ac_.problem<Real>();
     const bool restarted = tRestart >= 0;
     problems_.reserve(n_);
@@ -556,29 +639,7 @@ ensembleRun<Real>::ensembleRun
         if (tRestart >= 0)
         {
             // The same ensemble, or none
-            const IOdictionary had
-            (
-                IOobject
-                (
-                    "parameters", memberDir(k), runTime_,
-                    IOobject::MUST_READ, IOobject::NO_WRITE, false
-                )
-            );
-            dictionary now = ens_.memberDict(k);
-            OStringStream a, b;
-            a.precision(17);
-            b.precision(17);
-            for (const entry& e : now) { a << e; }
-            for (const entry& e : had) { if (e.keyword() != "FoamFile") b << e; }
-            if (a.str() != b.str())
-            {
-                FatalErrorInFunction
-                    << "ensemble/ holds another ensemble: "
-                    << memberDir(k) << "/parameters differs from what"
-                    << " ensembleDict makes of member " << k << nl
-                    << "Remove ensemble/ (or move it away) to start the"
-                    << " new ensemble" << nl << exit(FatalError);
-            }
+            checkSameMember(k);
             const scalar t = readMember(k, restartName);
             runTime_.setTime(t, 0);
             problems_.push_back(memberProblem(k, ac_.problem<Real>(), false));
@@ -597,22 +658,12 @@ ensembleRun<Real>::ensembleRun
         released_.push_back(fresh.volume());
         top_.push_back(releaseTop(fresh));
     }
-    restarted_ = tRestart >= 0;
-    if (restarted_)
-    {
-        Info<< "Restart of the ensemble from t = " << restartName
-            << " (the latest time every member has)" << nl << endl;
-    }
+}
 
-    // The backend
-    solver_ = selectEnsembleBackend<Real>(backend, problems_);
-    endIfSignalled("setting up the backend");
-    solver_->setMaxDt(ac_.input.maxDeltaT);
-    solver_->setInterrupt(&runSignals::pending);
-    Info<< "Ensemble of " << n_ << " members on "
-        << solver_->name().c_str() << nl << endl;
 
-    // The directories: members and statistics, viewable as cases
+template<class Real>
+void ensembleRun<Real>::makeDirectories()
+{
     atomicWriter caseWriter(runTime_);
     const label purge = caseWriter.purgeWrite();
     // A fresh start replaces what an earlier ensemble left (its later
@@ -651,6 +702,52 @@ ensembleRun<Real>::ensembleRun
     (
         new atomicWriter(runTime_, fileName("ensemble")/"statistics", purge)
     );
+}
+
+
+template<class Real>
+ensembleRun<Real>::ensembleRun
+(
+    avalancheCase& ac,
+    const word& backend,
+    const scalar logInterval
+)
+:
+    ac_(ac),
+    runTime_(ac.runTime),
+    ens_(ac.runTime, ac.input),
+    logInterval_(logInterval),
+    n_(ens_.members.size()),
+    startName_(ac.runTime.timeName())
+{
+    checkOptions();
+
+    // What a run killed while writing left (timeDirectories.H): a
+    // directory it was replacing back in place, the incomplete ones
+    // removed; before the restart looks for the members' times
+    restoreKilledWrites();
+
+    // Restart from the members' latest common time, or start
+    word restartName;
+    const scalar tRestart = startPoint(restartName);
+    setUpMembers(tRestart, restartName);
+    restarted_ = tRestart >= 0;
+    if (restarted_)
+    {
+        Info<< "Restart of the ensemble from t = " << restartName
+            << " (the latest time every member has)" << nl << endl;
+    }
+
+    // The backend
+    solver_ = selectEnsembleBackend<Real>(backend, problems_);
+    endIfSignalled("setting up the backend");
+    solver_->setMaxDt(ac_.input.maxDeltaT);
+    solver_->setInterrupt(&runSignals::pending);
+    Info<< "Ensemble of " << n_ << " members on "
+        << solver_->name().c_str() << nl << endl;
+
+    // The directories: members and statistics, viewable as cases
+    makeDirectories();
 }
 
 
