@@ -120,7 +120,7 @@ void handValues(Counter& t)
     t.check
     (
         relClose(staticFrictionCoefficient(f, 0.01), 0.486802133743683, 1e-13)
-     && relClose(muStop(f.pouliquenForterre, 0.01), 0.423507610246661, 1e-13),
+     && relClose(PouliquenForterre::muStop(f.pouliquenForterre, 0.01), 0.423507610246661, 1e-13),
         "mu_start(0.01) = 0.48680213374368, mu_stop(0.01) = 0.42350761024666"
     );
 
@@ -147,7 +147,7 @@ void handValues(Counter& t)
     t.check(relClose(below, above, 1e-12), "mu continuous at Fr = beta");
 
     ModelInput co;
-    co.deltaDeg = 24.5;
+    co.coulomb.deltaDeg = 24.5;
     const Params<double> pc = makeParams<double>(co);
     t.check
     (
@@ -222,7 +222,7 @@ void badCoefficients(Counter& t)
 
     // Another law's coefficients are not checked: they are not the input
     ModelInput in = pfInput();
-    in.deltaDeg = -5;
+    in.coulomb.deltaDeg = -5;
     bool ok = true;
     try { makeParams<double>(in); } catch (const InputError&) { ok = false; }
     t.check(ok, "PouliquenForterre ignores Coulomb's delta");
