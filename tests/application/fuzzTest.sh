@@ -163,7 +163,7 @@ endLaw()
     else
         for key in $lawKeys
         do
-            [ "$key" = "$lawAngle" ] || [ -n "${edgeAp[$key]}" ] || continue
+            [ "$key" = "$lawAngle" ] || [ -n "${edgeAp[$key]:-}" ] || continue
             lawKeywords="${lawKeywords}savageHutterFoam|ap$L|$tp|${L}Coeffs/$key|num${edgeAp[$key]:+|${edgeAp[$key]#,}}
 "
         done
@@ -196,9 +196,9 @@ do
         [ "$d" = rejected ] && local_v="$local_v!"
         if [ "$e" = activePassive ]
         then
-            edgeAp[$b]="${edgeAp[$b]},$local_v"
+            edgeAp[$b]="${edgeAp[$b]:-},$local_v"
         else
-            edgeIso[$b]="${edgeIso[$b]},$local_v"
+            edgeIso[$b]="${edgeIso[$b]:-},$local_v"
         fi
         ;;
     esac
