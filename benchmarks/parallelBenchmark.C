@@ -126,7 +126,7 @@ sh::Problem<Real> damBreakPart(const sh::Subdomain& s)
     sh::ModelInput in;
     in.g = 9.81;
     in.earthPressure = sh::EarthPressureModel::isotropic;
-    in.deltaDeg = 0;
+    in.coulomb.deltaDeg = 0;
     in.phiDeg = 30;
     const double Lx = s.nxWhole;
     const double Ly = s.nyWhole;

@@ -31,10 +31,19 @@
 #                  repeated x, angles of +-90 degrees and beyond (also only
 #                  between two cell centres), NaN, tuples of the wrong
 #                  form, huge;
-#       voellmy, pf  frictionModel Voellmy, PouliquenForterre: their
-#                  <Model>Coeffs and every coefficient;
-#       ap, apVoellmy  earthPressure activePassive with Coulomb (delta,
-#                  phi) and with Voellmy (mu: atan(mu) > phi is rejected);
+#       law<Name>  for every friction law that savageHutterFoam
+#                  -listFrictionLaws lists (the list of the laws' headers,
+#                  src/savageHutter/physics/frictionLaws): frictionModel
+#                  <Name> with its required coefficients at their defaults:
+#                  <Name>Coeffs and every coefficient, with the law's edge
+#                  cases as further variants; for a law without a basal
+#                  friction angle, earthPressure activePassive (rejected);
+#       ap<Name>   for a law with a basal friction angle: law<Name> with
+#                  earthPressure activePassive and phi 30, the coefficient
+#                  of the angle (its edge cases: delta > phi, atan(mu) >
+#                  phi are rejected);
+#       ap         earthPressure activePassive with Coulomb: phi below
+#                  delta is rejected;
 #       jet        system/fvOptions with an impingingJet: centre, R, R_imp,
 #                  u_jet, type, active, selectionMode;
 #       jetCoeffs  the same with the coefficients in impingingJetCoeffs:
@@ -121,6 +130,82 @@ jetCoeffs="centre (0 0 0); R 1; R_imp 2; u_jet 1;"
 jetEntries="$jetOuter $jetCoeffs"
 fvOptionsHeader='FoamFile { version 2.0; format ascii; class dictionary; object fvOptions; }'
 
+# -- The friction laws: from the solver's own list -------------------------------
+#- lawCases: a line "Name|{ coefficients }|angle keyword or none" per law;
+#  lawKeywords: the keyword lines (below) of its cases
+(cd "$work" && savageHutterFoam -listFrictionLaws > frictionLaws.log 2>&1) \
+ && grep -q '^frictionModel ' "$work/frictionLaws.log" \
+ || { cat "$work/frictionLaws.log"; fail "savageHutterFoam -listFrictionLaws"; finish; exit 1; }
+lawCases=""
+lawKeywords=""
+declare -A edgeIso edgeAp
+lawName=""
+#- endLaw: the case and keyword lines of the law read so far
+endLaw()
+{
+    [ -n "$lawName" ] || return 0
+    local L="$lawName" key kind
+    lawCases="$lawCases$L|{$lawEntries }|$lawAngle
+"
+    lawKeywords="${lawKeywords}savageHutterFoam|law$L|$tp|${L}Coeffs|dict
+"
+    for key in $lawKeys
+    do
+        kind=num
+        [[ " $lawOptional " == *" $key "* ]] && kind=optnum
+        lawKeywords="${lawKeywords}savageHutterFoam|law$L|$tp|${L}Coeffs/$key|$kind${edgeIso[$key]:+|${edgeIso[$key]#,}}
+"
+    done
+    if [ "$lawAngle" = none ]
+    then
+        lawKeywords="${lawKeywords}savageHutterFoam|law$L|$tp|earthPressure|word:isotropic|activePassive=activePassive!
+"
+    else
+        for key in $lawKeys
+        do
+            [ "$key" = "$lawAngle" ] || [ -n "${edgeAp[$key]:-}" ] || continue
+            lawKeywords="${lawKeywords}savageHutterFoam|ap$L|$tp|${L}Coeffs/$key|num${edgeAp[$key]:+|${edgeAp[$key]#,}}
+"
+        done
+    fi
+    lawName=""
+}
+while read -r tag a b c d e _
+do
+    case "$tag" in
+    frictionModel)
+        endLaw
+        lawName="$a"; lawEntries=""; lawKeys=""; lawOptional=""; lawAngle=none
+        edgeIso=(); edgeAp=()
+        ;;
+    coefficient)
+        lawKeys="$lawKeys $a"
+        if [ "$c" = required ]
+        then
+            lawEntries="$lawEntries $a $b;"
+        else
+            lawOptional="$lawOptional $a"
+        fi
+        ;;
+    activePassive)
+        [ "$a" = none: ] || lawAngle="$a"
+        ;;
+    edge)
+        # edge <name> <keyword> <value> accepted|rejected isotropic|activePassive
+        local_v="$a=$c"
+        [ "$d" = rejected ] && local_v="$local_v!"
+        if [ "$e" = activePassive ]
+        then
+            edgeAp[$b]="${edgeAp[$b]:-},$local_v"
+        else
+            edgeIso[$b]="${edgeIso[$b]:-},$local_v"
+        fi
+        ;;
+    esac
+done < "$work/frictionLaws.log"
+endLaw
+[ -n "$lawCases" ] || { fail "no friction law in savageHutterFoam -listFrictionLaws"; finish; exit 1; }
+
 #- clean <case>: no time directory but 0, no logs
 clean()
 {
@@ -157,24 +242,26 @@ runs()
     (cd "$b" && runApplication setAvalancheFields)
     runs "$b"
 
-    d="$work/voellmy"; cp -r "$b" "$d"
-    setEntry "$d/$tp" frictionModel Voellmy
-    foamDictionary "$d/$tp" -entry CoulombCoeffs -remove > /dev/null
-    setEntry "$d/$tp" VoellmyCoeffs '{ mu 0.2; xi 2000; }'
-    runs "$d"
-
-    d="$work/pf"; cp -r "$b" "$d"
-    setEntry "$d/$tp" frictionModel PouliquenForterre
-    foamDictionary "$d/$tp" -entry CoulombCoeffs -remove > /dev/null
-    setEntry "$d/$tp" PouliquenForterreCoeffs \
-        '{ zeta1 21; zeta2 30.7; zeta3 22.2; L 6e-3; beta 0.136; gamma 1e-3; }'
-    runs "$d"
+    # A case per friction law, and with activePassive where it has a
+    # basal friction angle
+    while IFS='|' read -r L entries angle
+    do
+        [ -n "$L" ] || continue
+        d="$work/law$L"; cp -r "$b" "$d"
+        setEntry "$d/$tp" frictionModel "$L"
+        foamDictionary "$d/$tp" -entry CoulombCoeffs -remove > /dev/null
+        setEntry "$d/$tp" "${L}Coeffs" "$entries"
+        runs "$d"
+        if [ "$angle" != none ]
+        then
+            cp -r "$d" "$work/ap$L"
+            setEntry "$work/ap$L/$tp" earthPressure activePassive
+            setEntry "$work/ap$L/$tp" phi 30
+            runs "$work/ap$L"
+        fi
+    done <<< "$lawCases"
 
     d="$work/ap"; cp -r "$b" "$d"
-    setEntry "$d/$tp" earthPressure activePassive
-    runs "$d"
-
-    d="$work/apVoellmy"; cp -r "$work/voellmy" "$d"
     setEntry "$d/$tp" earthPressure activePassive
     runs "$d"
 
@@ -262,25 +349,10 @@ savageHutterFoam|table|$tp|inclination|table
 savageHutterFoam|base|$tp|earthPressure|word:isotropic
 savageHutterFoam|base|$tp|phi|num
 savageHutterFoam|base|$tp|frictionModel|word:Coulomb
-savageHutterFoam|base|$tp|CoulombCoeffs|dict
-savageHutterFoam|base|$tp|CoulombCoeffs/delta|num
 savageHutterFoam|base|$tp|rho|optnum
 savageHutterFoam|base|$tp|arrivalThreshold|optnum
-savageHutterFoam|voellmy|$tp|VoellmyCoeffs|dict
-savageHutterFoam|voellmy|$tp|VoellmyCoeffs/mu|num
-savageHutterFoam|voellmy|$tp|VoellmyCoeffs/xi|num
-savageHutterFoam|pf|$tp|earthPressure|word:isotropic|activePassive=activePassive!
-savageHutterFoam|pf|$tp|PouliquenForterreCoeffs|dict
-savageHutterFoam|pf|$tp|PouliquenForterreCoeffs/zeta1|num|aboveZeta2=35!
-savageHutterFoam|pf|$tp|PouliquenForterreCoeffs/zeta2|num
-savageHutterFoam|pf|$tp|PouliquenForterreCoeffs/zeta3|num|belowZeta1=10!
-savageHutterFoam|pf|$tp|PouliquenForterreCoeffs/L|num
-savageHutterFoam|pf|$tp|PouliquenForterreCoeffs/beta|num
-savageHutterFoam|pf|$tp|PouliquenForterreCoeffs/gamma|num
 savageHutterFoam|ap|$tp|earthPressure|word:activePassive
 savageHutterFoam|ap|$tp|phi|num|belowDelta=20!
-savageHutterFoam|ap|$tp|CoulombCoeffs/delta|num|abovePhi=35!,equalPhi=30
-savageHutterFoam|apVoellmy|$tp|VoellmyCoeffs/mu|num|abovePhi=1!
 savageHutterFoam|base|$fs|savageHutter|dict
 savageHutterFoam|base|$fs|savageHutter/limiter|word:minmod
 savageHutterFoam|base|$fs|savageHutter/stoppingCriterion|switch:on
@@ -438,6 +510,9 @@ setAvalancheFields|pre|$sa|U/damBreak/upstream|vec
 setAvalancheFields|pre|$sa|U/damBreak/downstream|vec
 setAvalancheFields|pre|0/h|internalField|sfield
 "
+# The friction laws' lines (from savageHutterFoam -listFrictionLaws, above)
+keywords="$keywords
+$lawKeywords"
 
 #- variants <kind> <extras>: lines "name|value"; value "-" removes the
 #  entry, "~" renames the keyword (misspelt)
@@ -1082,7 +1157,7 @@ do
     then
         [ -z "$lastKey" ] || table="$table$row
 "
-        row="$(printf '%-18s %-9s %-28s %-38s' "$app" "$from" "$file" "$entry")"
+        row="$(printf '%-18s %-21s %-28s %-38s' "$app" "$from" "$file" "$entry")"
         lastKey="$thisKey"
     fi
     name="$app:$from:$file:$entry:$vname"

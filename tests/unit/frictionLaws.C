@@ -1,8 +1,16 @@
 /*---------------------------------------------------------------------------*\
   The friction laws (physics/frictionLaws): the portable exp/log/pow they
-  use, each law against hand-computed values, the rejection of bad
-  coefficients, and uniform layers on an incline against their exact steady
-  states:
+  use; every law of the list (frictionLawList.H), from its header alone:
+  its name selects it, its worked examples (double and float), the
+  dispatch of FrictionParams against the law's own functions, material at
+  rest as strong as staticMu, finite and non-negative mu and drag, each
+  coefficient outside its bound rejected naming its keyword, its edge
+  cases, earthPressure activePassive with its friction angle or refused
+  without one, and in the scheme a uniform layer at rest that holds below
+  its static friction and starts to flow above it; a law without examples
+  fails; then each law against further hand-computed values, the
+  rejection of bad coefficients, and uniform layers on an incline against
+  their exact steady states:
 
     Pouliquen-Forterre (Zhai et al. 2014 eqs 39-43): a layer of depth
       h > h_stop(zeta) relaxes to the speed |v| = Fr sqrt(eps g h cos zeta)
@@ -96,31 +104,15 @@ ModelInput pfInput()
 
 void handValues(Counter& t)
 {
-    std::printf("\nEach law against hand-computed values (zeta = 26.7 deg, g = 9.81)\n");
+    std::printf("\nFurther hand-computed values (zeta = 26.7 deg, g = 9.81)\n");
     const double cz = std::cos(26.7*deg);
     const Params<double> p = makeParams<double>(pfInput());
     const FrictionParams<double>& f = p.friction;
 
-    struct Row { double h, speed, mu; const char* what; };
-    const Row rows[] =
-    {
-        {0.01, 0.2, 0.533931275784013, "Fr = 0.676 >= beta: mu_stop(h beta/Fr), eq. 42"},
-        {0.005, 0.01, 0.475132612190783, "Fr = 0.0478 < beta: eq. 43"},
-        {0.004, 1e-6, 0.492054433950500, "Fr = 5.3e-6: eq. 43, near mu_stop"},
-        {0.005, 0.0, 0.522579266900671, "Fr = 0: mu_start(h), eq. 41"},
-        {0.0, 0.3, 0.617984955319308, "h = 0: mu_start(0)"},
-    };
-    std::printf("  %8s %8s %18s %18s\n", "h [m]", "|v|", "mu", "hand");
-    for (const Row& r : rows)
-    {
-        const double mu = frictionCoefficient(f, {r.h, r.speed, cz});
-        std::printf("  %8g %8g %18.15f %18.15f\n", r.h, r.speed, mu, r.mu);
-        t.check(relClose(mu, r.mu, 1e-13), std::string("PouliquenForterre ") + r.what);
-    }
     t.check
     (
         relClose(staticFrictionCoefficient(f, 0.01), 0.486802133743683, 1e-13)
-     && relClose(muStop(f.pouliquenForterre, 0.01), 0.423507610246661, 1e-13),
+     && relClose(PouliquenForterre::muStop(f.pouliquenForterre, 0.01), 0.423507610246661, 1e-13),
         "mu_start(0.01) = 0.48680213374368, mu_stop(0.01) = 0.42350761024666"
     );
 
@@ -147,7 +139,7 @@ void handValues(Counter& t)
     t.check(relClose(below, above, 1e-12), "mu continuous at Fr = beta");
 
     ModelInput co;
-    co.deltaDeg = 24.5;
+    co.coulomb.deltaDeg = 24.5;
     const Params<double> pc = makeParams<double>(co);
     t.check
     (
@@ -222,7 +214,7 @@ void badCoefficients(Counter& t)
 
     // Another law's coefficients are not checked: they are not the input
     ModelInput in = pfInput();
-    in.deltaDeg = -5;
+    in.coulomb.deltaDeg = -5;
     bool ok = true;
     try { makeParams<double>(in); } catch (const InputError&) { ok = false; }
     t.check(ok, "PouliquenForterre ignores Coulomb's delta");
@@ -235,12 +227,12 @@ void badCoefficients(Counter& t)
     catch (const InputError& e)
     {
         std::printf("    %s\n", e.what());
-        t.check
-        (
-            std::string(e.what()).find("Coulomb PouliquenForterre Voellmy")
-         != std::string::npos,
-            "unknown friction law rejected, listing the valid ones"
-        );
+        bool all = true;
+        for (const std::string& name : frictionLawNames())
+        {
+            all = all && std::string(e.what()).find(" " + name) != std::string::npos;
+        }
+        t.check(all, "unknown friction law rejected, listing the valid ones");
     }
 }
 
@@ -274,6 +266,236 @@ Layer uniformLayer(const ModelInput& in, double zetaDeg, double h0, double u0, d
     }
     return r;
 }
+
+//- The input of a law at the defaults of its header, earthPressure
+//  isotropic (activePassive: with phi = 30 deg)
+template<class Law>
+ModelInput lawInput(bool activePassive = false)
+{
+    ModelInput in;
+    in.g = 9.81;
+    in.epsilon = 1;
+    in.phiDeg = 30;
+    in.earthPressure = activePassive
+        ? EarthPressureModel::activePassive
+        : EarthPressureModel::isotropic;
+    in.frictionLaw = frictionLawOf(Law());
+    return in;
+}
+
+//- The keyword of the InputError that makeParams throws on in; "" where
+//  it accepts in
+std::string rejection(const ModelInput& in)
+{
+    try
+    {
+        makeParams<double>(in);
+        makeParams<float>(in);
+    }
+    catch (const InputError& e)
+    {
+        return e.keyword();
+    }
+    return "";
+}
+
+//- Tolerance 1e-13 relative, and absolute where the value is 0
+bool close(double a, double b, double tol)
+{
+    return b == 0 ? std::fabs(a) <= tol : relClose(a, b, tol);
+}
+
+//- Every check of one law, from its header alone
+template<class Law>
+void checkLaw(Counter& t, int& exercised)
+{
+    const std::string name = Law::name;
+    const FrictionLaw law = frictionLawOf(Law());
+    std::printf("\n%s: %s\n", Law::name, Law::description);
+
+    t.check
+    (
+        parseFrictionLaw(name) == law && toString(law) == name,
+        name + ": its name selects it"
+    );
+
+    const ModelInput in = lawInput<Law>();
+    const std::string defaultsRejected = rejection(in);
+    t.check(defaultsRejected.empty(), name + ": its defaults are valid input");
+    if (!defaultsRejected.empty())
+    {
+        return;
+    }
+    const Params<double> p = makeParams<double>(in);
+    const Params<float> pf = makeParams<float>(in);
+    const LawParams<Law, double>& lp = p.friction.of(Law());
+
+    // The worked examples of the header
+    int nExamples = 0;
+    std::printf("  %8s %8s %6s %18s %18s %12s\n", "h", "|v|", "zeta", "mu", "example", "drag");
+    for (const FrictionExample& e : Law::examples)
+    {
+        const double cz = std::cos(e.zetaDeg*deg);
+        const double mu = frictionCoefficient(p.friction, {e.h, e.speed, cz});
+        const double drag = frictionDrag(p.friction, e.speed);
+        const float muF = frictionCoefficient
+        (
+            pf.friction, {float(e.h), float(e.speed), float(cz)}
+        );
+        const float dragF = frictionDrag(pf.friction, float(e.speed));
+        std::printf
+        (
+            "  %8g %8g %6g %18.15f %18.15f %12.6g\n",
+            e.h, e.speed, e.zetaDeg, mu, e.mu, drag
+        );
+        t.check
+        (
+            close(mu, e.mu, 1e-13) && close(drag, e.drag, 1e-13)
+         && close(muF, e.mu, 1e-5) && close(dragF, e.drag, 1e-5),
+            name + ": " + e.what + " (double 1e-13, float 1e-5)"
+        );
+        ++nExamples;
+    }
+
+    // The dispatch, the strength at rest, finite non-negative values
+    bool dispatch = true;
+    bool rest = true;
+    bool finite = true;
+    for (const double h : {0.0, 1e-300, 1e-3, 0.01, 1.0, 100.0})
+    {
+        for (const double speed : {0.0, 1e-6, 0.1, 1.0, 30.0})
+        {
+            for (const double zetaDeg : {0.0, 30.0, 60.0})
+            {
+                const FrictionState<double> s{h, speed, std::cos(zetaDeg*deg)};
+                const double mu = frictionCoefficient(p.friction, s);
+                dispatch = dispatch && mu == Law::mu(lp, s);
+                finite = finite && std::isfinite(mu) && mu >= 0;
+                const float muF = frictionCoefficient
+                (
+                    pf.friction, {float(h), float(speed), float(s.cosZeta)}
+                );
+                finite = finite && std::isfinite(muF) && muF >= 0;
+                if (speed == 0)
+                {
+                    rest = rest && mu == staticFrictionCoefficient(p.friction, h);
+                }
+            }
+        }
+        dispatch = dispatch
+         && staticFrictionCoefficient(p.friction, h) == Law::staticMu(lp, h);
+    }
+    const double k = dragCoefficient(p.friction);
+    dispatch = dispatch && k == Law::dragCoefficient(lp);
+    finite = finite && std::isfinite(k) && k >= 0;
+    t.check(dispatch, name + ": FrictionParams dispatches to the law's mu, staticMu and dragCoefficient");
+    t.check(rest, name + ": material at rest has the strength staticMu (mu at speed 0)");
+    t.check(finite, name + ": mu and the drag coefficient finite and >= 0 (h 0 to 100, |v| 0 to 30, zeta 0 to 60 deg)");
+
+    // Each coefficient outside its bound, and not finite
+    for (const auto& c : Law::coefficients)
+    {
+        std::vector<double> bad{std::nan(""), 1e31, -1e31};
+        switch (c.bound)
+        {
+            case Bound::angle: bad.insert(bad.end(), {-1, 90, 120}); break;
+            case Bound::positive: bad.insert(bad.end(), {0, -1}); break;
+            case Bound::nonNegative: bad.insert(bad.end(), {-1e-3}); break;
+            case Bound::finite: break;
+        }
+        bool all = true;
+        for (const double v : bad)
+        {
+            ModelInput bent = in;
+            bent.of(Law()).*c.value = v;
+            const std::string k = rejection(bent);
+            if (k != c.keyword)
+            {
+                std::printf("    %s = %g: %s\n", c.keyword, v, k.empty() ? "accepted" : ("rejected naming " + k).c_str());
+            }
+            all = all && k == c.keyword;
+        }
+        t.check(all, name + ": " + c.keyword + " outside its bound or not finite rejected, naming " + c.keyword);
+    }
+
+    // The edge cases of the header
+    for (const EdgeCase& e : Law::edgeCases)
+    {
+        ModelInput edge = lawInput<Law>(e.activePassive);
+        bool known = false;
+        for (const auto& c : Law::coefficients)
+        {
+            if (std::string(c.keyword) == e.keyword)
+            {
+                edge.of(Law()).*c.value = e.value;
+                known = true;
+            }
+        }
+        const std::string k = rejection(edge);
+        t.check
+        (
+            known && (e.accepted ? k.empty() : k == e.keyword),
+            name + ": " + e.name + ", " + e.keyword + " = " + numberString(e.value)
+          + (e.activePassive ? " with activePassive, phi 30" : "")
+          + (e.accepted ? ", accepted" : ", rejected naming " + std::string(e.keyword))
+        );
+    }
+
+    // earthPressure activePassive
+    ModelInput ap = lawInput<Law>(true);
+    ap.phiDeg = 89;
+    if (Law::frictionAngle.kind != FrictionAngle::none)
+    {
+        bool known = false;
+        for (const auto& c : Law::coefficients)
+        {
+            known = known || std::string(c.keyword) == Law::frictionAngle.keyword;
+        }
+        t.check
+        (
+            known && rejection(ap).empty(),
+            name + ": activePassive (phi 89) takes its friction angle from its coefficient "
+          + Law::frictionAngle.keyword
+        );
+    }
+    else
+    {
+        t.check(rejection(ap) == "earthPressure", name + ": no friction angle, activePassive refused naming earthPressure");
+    }
+
+    // The scheme: a uniform layer at rest on a slope below and above its
+    // static friction (4x4 cells, transmissive sides)
+    const double h0 = 0.01;
+    const double muS = staticFrictionCoefficient(p.friction, h0);
+    const double holdDeg = std::atan(0.9*muS)/deg;
+    const double flowDeg = std::atan(1.1*muS + 0.02)/deg;
+    const Layer holds = uniformLayer(in, holdDeg, h0, 0.0, 1.0);
+    const Layer flows = uniformLayer(in, flowDeg, h0, 0.0, 0.05);
+    std::printf("  static mu(h = %g) = %.6f: at %.3f deg u = %g, at %.3f deg u = %g\n", h0, muS, holdDeg, holds.u, flowDeg, flows.u);
+    t.check(holds.atRest && holds.uniform, name + ": a layer at rest below its static friction holds exactly");
+    t.check(!flows.atRest && flows.u > 0 && std::isfinite(flows.u) && flows.uniform, name + ": above it the layer starts to flow downslope");
+
+    t.check(nExamples > 0, name + ": its header gives worked examples");
+    if (nExamples > 0)
+    {
+        ++exercised;
+    }
+}
+
+void everyLaw(Counter& t)
+{
+    std::printf("\nEvery law of the list (physics/frictionLaws/frictionLawList.H)\n");
+    int exercised = 0;
+    forEachFrictionLaw([&](auto law) { checkLaw<decltype(law)>(t, exercised); });
+    std::printf("\n");
+    t.check
+    (
+        exercised == nFrictionLaws
+     && int(frictionLawNames().size()) == nFrictionLaws,
+        fmt("all %g laws of the list exercised", nFrictionLaws)
+    );
+}
+
 
 void pouliquenForterreLayers(Counter& t)
 {
@@ -342,6 +564,7 @@ int main()
 {
     Counter t;
     portableMath(t);
+    everyLaw(t);
     handValues(t);
     badCoefficients(t);
     pouliquenForterreLayers(t);

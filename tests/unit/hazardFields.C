@@ -249,7 +249,7 @@ void ritterArrival(Counter& test)
     in.g = g;
     in.earthPressure = EarthPressureModel::isotropic;
     in.phiDeg = 35;
-    in.deltaDeg = 0;
+    in.coulomb.deltaDeg = 0;
     in.staticResistance = false;
     in.stoppingCriterion = false;
     const double c0 = std::sqrt(g*h0);

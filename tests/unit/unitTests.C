@@ -33,7 +33,7 @@ ModelInput defaultInput()
     ModelInput in;
     in.g = 9.81;
     in.phiDeg = 35;
-    in.deltaDeg = 25;
+    in.coulomb.deltaDeg = 25;
     return in;
 }
 
@@ -105,7 +105,7 @@ void hllcConsistency(Counter& t)
     // Through the whole scheme: a uniform flow on a flat frictionless bed
     // stays uniform (reconstruction + flux + update, both directions)
     ModelInput in = defaultInput();
-    in.deltaDeg = 0;
+    in.coulomb.deltaDeg = 0;
     in.earthPressure = EarthPressureModel::isotropic;
     Problem<double> pb(makeParams<double>(in), 20, 12, 0, 1, 0, 1);
     pb.setState([](double, double) { return Primitive{0.3, 1.5, -0.7}; });
@@ -193,11 +193,11 @@ void inputValidation(Counter& t)
         }
     };
     rejects("delta > phi with activePassive",
-        [](ModelInput& in) { in.phiDeg = 20; in.deltaDeg = 25; }, "delta", "phi");
+        [](ModelInput& in) { in.phiDeg = 20; in.coulomb.deltaDeg = 25; }, "delta", "phi");
     rejects("phi = 0", [](ModelInput& in) { in.phiDeg = 0; }, "phi", "(0, 90)");
     rejects("phi = 90", [](ModelInput& in) { in.phiDeg = 90; }, "phi", "(0, 90)");
-    rejects("delta = 90", [](ModelInput& in) { in.deltaDeg = 90; in.phiDeg = 89; }, "delta", "[0, 90)");
-    rejects("delta < 0", [](ModelInput& in) { in.deltaDeg = -1; }, "delta", "[0, 90)");
+    rejects("delta = 90", [](ModelInput& in) { in.coulomb.deltaDeg = 90; in.phiDeg = 89; }, "delta", "[0, 90)");
+    rejects("delta < 0", [](ModelInput& in) { in.coulomb.deltaDeg = -1; }, "delta", "[0, 90)");
     rejects("phi NaN", [](ModelInput& in) { in.phiDeg = std::nan(""); }, "phi", "finite");
     rejects("hDry = 0", [](ModelInput& in) { in.hDry = 0; }, "hDry", "positive");
     rejects("Courant number 1.5", [](ModelInput& in) { in.cfl = 1.5; }, "maxCo", "(0, 1]");
@@ -206,9 +206,9 @@ void inputValidation(Counter& t)
     try
     {
         ModelInput in = defaultInput();
-        in.deltaDeg = 0;
+        in.coulomb.deltaDeg = 0;
         makeParams<double>(in);
-        in.deltaDeg = 30;
+        in.coulomb.deltaDeg = 30;
         in.phiDeg = 20;
         in.earthPressure = EarthPressureModel::isotropic;
         makeParams<double>(in);
@@ -250,7 +250,7 @@ void frictionNeverReverses(Counter& t)
     // A layer sliding on a 10 deg slope with delta = 30 deg decelerates to
     // rest and stays there; no velocity component ever changes sign
     ModelInput in = defaultInput();
-    in.deltaDeg = 30;
+    in.coulomb.deltaDeg = 30;
     Problem<double> pb(makeParams<double>(in), 8, 8, 0, 1, 0, 1);
     pb.setInclination([](double) { return 10*deg; });
     pb.setState([](double, double) { return Primitive{0.05, 2.0, 1.0}; });
@@ -304,7 +304,7 @@ void staticResistanceOnIncline(Counter& t)
     for (const double zetaDeg : {24.0, 26.0})
     {
         ModelInput in = defaultInput();
-        in.deltaDeg = 25;
+        in.coulomb.deltaDeg = 25;
         Problem<double> pb(makeParams<double>(in), 6, 6, 0, 1, 0, 1);
         pb.setInclination([&](double) { return zetaDeg*deg; });
         pb.setState([](double, double) { return Primitive{0.3, 0, 0}; });
@@ -386,7 +386,7 @@ void curvedBedAcceleration(Counter& t)
     // eps g K kappa sin(zeta) (beta inside the derivative, eq. 2)
     ModelInput in = defaultInput();
     in.earthPressure = EarthPressureModel::isotropic;
-    in.deltaDeg = 20;
+    in.coulomb.deltaDeg = 20;
     in.lambda = 1;
     const double zeta0 = 30*deg, kappa0 = 0.5, h = 0.4, u = 3.0;
     Problem<double> pb(makeParams<double>(in), 81, 4, -0.405, 0.405, 0, 0.04);
@@ -421,7 +421,7 @@ void thinCells(Counter& t)
     // opens an empty ring; draining cells must not reach absurd speeds and
     // collapse the time step
     ModelInput in = defaultInput();
-    in.deltaDeg = 0;
+    in.coulomb.deltaDeg = 0;
     const int n = 100;
     Problem<double> pb(makeParams<double>(in), n, n, -1, 1, -1, 1);
     pb.bc.type[xMin] = pb.bc.type[xMax] = BCType::wall;
@@ -475,7 +475,7 @@ void positivity(Counter& t)
         {
             ModelInput in = defaultInput();
             in.limiter = parseLimiter(lim);
-            in.deltaDeg = 0;
+            in.coulomb.deltaDeg = 0;
             Problem<double> pb(makeParams<double>(in), 100, 4, -1, 1, 0, 0.08);
             pb.bc.type[xMin] = BCType::wall;
             pb.bc.type[xMax] = BCType::wall;
@@ -506,7 +506,7 @@ void closedBoxMass(Counter& t)
     std::printf("\nMass conservation in a closed box\n");
     ModelInput in = defaultInput();
     in.phiDeg = 30;
-    in.deltaDeg = 20;
+    in.coulomb.deltaDeg = 20;
     Problem<double> pb(makeParams<double>(in), 60, 40, 0, 6, -2, 2);
     for (int s = 0; s < 4; ++s) { pb.bc.type[s] = BCType::wall; }
     pb.setInclination([](double x) { return (x < 3 ? 35 : 35*(6 - x)/3)*deg; });
@@ -540,7 +540,7 @@ void inflowBoundary(Counter& t)
 {
     std::printf("\nPrescribed inflow (supercritical, into a dry channel)\n");
     ModelInput in = defaultInput();
-    in.deltaDeg = 0;
+    in.coulomb.deltaDeg = 0;
     in.earthPressure = EarthPressureModel::isotropic;
     const double W = 0.2, h0 = 0.1, u0 = 3.0, tEnd = 0.5;
     Problem<double> pb(makeParams<double>(in), 80, 4, 0, 4, 0, W);
@@ -687,7 +687,7 @@ void serialOpenMPFloat(Counter& t)
     ModelInput in = defaultInput();
     in.g = 1;
     in.phiDeg = 30;
-    in.deltaDeg = 30;
+    in.coulomb.deltaDeg = 30;
 
     long n1, n2, n3;
     std::string s1, s2, s3;
@@ -738,7 +738,7 @@ void vanishingThickness(Counter& t, Real tiny, Real subnormal)
     ModelInput in = defaultInput();
     in.earthPressure = EarthPressureModel::activePassive;
     in.phiDeg = 35;
-    in.deltaDeg = 17;
+    in.coulomb.deltaDeg = 17;
     Problem<Real> pb(makeParams<Real>(in), 12, 8, 0, 1.2, 0, 0.8);
     pb.setInclination([](double) { return 30*deg; });
     pb.setState([&](double x, double y)

@@ -33,7 +33,7 @@ void run(Counter& test, int n)
     in.g = 9.81;
     in.earthPressure = EarthPressureModel::activePassive;
     in.phiDeg = 20;
-    in.deltaDeg = 20;
+    in.coulomb.deltaDeg = 20;
     const Params<double> p = makeParams<double>(in);
     Problem<double> pb(p, n, n, -0.3, 0.3, -0.3, 0.3);
     for (int s = 0; s < 4; ++s)

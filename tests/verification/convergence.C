@@ -278,11 +278,11 @@ void capTables(Counter& test)
     in.g = g;
     in.earthPressure = EarthPressureModel::activePassive;
     in.phiDeg = 30;
-    in.deltaDeg = 25;
+    in.coulomb.deltaDeg = 25;
     const double Kx = makeParams<double>(in).K.kx[0];
 
     ParabolicCap cap;
-    cap.a = g*(std::sin(zeta) - std::tan(in.deltaDeg*deg)*std::cos(zeta));
+    cap.a = g*(std::sin(zeta) - std::tan(in.coulomb.deltaDeg*deg)*std::cos(zeta));
     cap.beta = in.epsilon*g*std::cos(zeta)*Kx;
     cap.xc0 = 0;
     cap.uc0 = 3;
@@ -300,7 +300,7 @@ void capTables(Counter& test)
                 "(Savage & Hutter 1989)\n");
     std::printf("   g = %g, eps = %g, zeta = %g deg, delta = %g deg, phi = %g deg: "
                 "Kx_act = %.6f, beta = %.6f, a = %.6f m/s^2\n",
-        g, in.epsilon, zeta/deg, in.deltaDeg, in.phiDeg, Kx, cap.beta, cap.a);
+        g, in.epsilon, zeta/deg, in.coulomb.deltaDeg, in.phiDeg, Kx, cap.beta, cap.a);
     std::printf("   t = 0: xc = %g, uc = %g, G = %g, G' = %g, H = %g\n",
         e0.xc, e0.uc, e0.G, e0.Gdot, e0.H);
     std::printf("   t = %g: xc = %.6f, uc = %.6f, G = %.9f, G' = %.9f, H = %.9f\n",
@@ -382,7 +382,7 @@ void damBreakTables(Counter& test, double t0, double minOrder)
     in.g = g;
     in.earthPressure = EarthPressureModel::isotropic;
     in.phiDeg = 40;
-    in.deltaDeg = 24.5;
+    in.coulomb.deltaDeg = 24.5;
 
     // chi = x + m t^2/2 moves with the uniform acceleration -m of the layer
     const double m = g*std::cos(zeta)*(std::tan(delta) - std::tan(zeta));

@@ -25,7 +25,7 @@ int main()
     in.g = g;
     in.earthPressure = EarthPressureModel::isotropic;
     in.phiDeg = 40;
-    in.deltaDeg = 24.5;
+    in.coulomb.deltaDeg = 24.5;
     const Params<double> p = makeParams<double>(in);
 
     // Table II of the paper: L2, Linf

@@ -71,7 +71,7 @@ LineResult compressedLine
     ModelInput in;
     in.g = 9.81;
     in.phiDeg = phi;
-    in.deltaDeg = delta;
+    in.coulomb.deltaDeg = delta;
     in.cfl = 0.4;
     in.limiter = Limiter::minmod;
     in.earthPressure = K;
@@ -163,7 +163,7 @@ double collapseAsymmetry(EarthPressureModel K, double& input, long& moving)
     ModelInput in;
     in.g = 9.81;
     in.phiDeg = 20;
-    in.deltaDeg = 20;
+    in.coulomb.deltaDeg = 20;
     in.earthPressure = K;
     const int n = 96;
     // Cell centres in floating point: x0 + (i + 1/2) dx (Problem's)

@@ -119,7 +119,7 @@ void lakes(Counter& t)
                 ? EarthPressureModel::activePassive
                 : EarthPressureModel::isotropic;
             in.phiDeg = 30;
-            in.deltaDeg = 0;
+            in.coulomb.deltaDeg = 0;
             const int n = 64;
             Problem<double> pb(makeParams<double>(in), n, n, -1, 1, -1, 1);
             for (int s = 0; s < 4; ++s)
@@ -176,7 +176,7 @@ Problem<double> layerOnVaryingZeta(bool activePassive, bool staticRule)
     in.earthPressure = activePassive
         ? EarthPressureModel::activePassive : EarthPressureModel::isotropic;
     in.phiDeg = 30;
-    in.deltaDeg = 25;
+    in.coulomb.deltaDeg = 25;
     in.staticResistance = staticRule;
     in.stoppingCriterion = staticRule;
     Problem<double> pb(makeParams<double>(in), 60, 28, 0, 30, -7, 7);
@@ -230,7 +230,7 @@ void slopeAtOpenSides(Counter& t)
     in.g = 9.81;
     in.earthPressure = EarthPressureModel::isotropic;
     in.phiDeg = 30;
-    in.deltaDeg = 0;
+    in.coulomb.deltaDeg = 0;
     Problem<double> pb(makeParams<double>(in), 20, 6, 0, 10, 0, 3);
     pb.setTopography([](double x, double) { return -0.1*x; });
     pb.setState([](double, double) { return Primitive{0.5, 0, 0}; });
@@ -318,7 +318,7 @@ void lakesAtOpenSides(Counter& t)
             in.earthPressure = ap
                 ? EarthPressureModel::activePassive : EarthPressureModel::isotropic;
             in.phiDeg = 30;
-            in.deltaDeg = 0;
+            in.coulomb.deltaDeg = 0;
             const int n = 64;
             Problem<double> pb(makeParams<double>(in), n, n, -1, 1, -1, 1);
             setSymmetric(pb, 1, lake.zb, [&](double x, double y)
@@ -350,7 +350,7 @@ void lakesWithK(Counter& t)
             in.g = 9.81;
             in.earthPressure = EarthPressureModel::activePassive;
             in.phiDeg = 30;
-            in.deltaDeg = 0;
+            in.coulomb.deltaDeg = 0;
             in.staticResistance = false;
             in.stoppingCriterion = false;
             const Params<double> p = makeParams<double>(in);
@@ -429,7 +429,7 @@ void symmetry(Counter& t)
             in.g = 9.81;
             in.earthPressure = var.K;
             in.phiDeg = var.phi;
-            in.deltaDeg = var.delta;
+            in.coulomb.deltaDeg = var.delta;
             in.limiter = lims[k];
             const int n = 40;
             Problem<double> pb(makeParams<double>(in), n, n, -0.3, 0.3, -0.3, 0.3);
@@ -478,7 +478,7 @@ void momentum(Counter& t)
         ModelInput in;
         in.g = 9.81;
         in.phiDeg = 30;
-        in.deltaDeg = 0;
+        in.coulomb.deltaDeg = 0;
         in.staticResistance = false;
         in.stoppingCriterion = false;
         in.hDry = 1e-12;
@@ -602,7 +602,7 @@ void precisions(Counter& t)
     ModelInput in;
     in.g = 9.81;
     in.phiDeg = 30;
-    in.deltaDeg = 20;     // Kx act != pass (delta < phi)
+    in.coulomb.deltaDeg = 20;     // Kx act != pass (delta < phi)
     Problem<double> pb = shcases::pileInBowl<double>(in, 64);
     CpuSolver<double> s(pb, false);
     s.advanceTo(0.2);
@@ -642,7 +642,7 @@ void frontCfl(Counter& t)
     in.g = 9.81;
     in.earthPressure = EarthPressureModel::isotropic;
     in.phiDeg = 30;
-    in.deltaDeg = 20;
+    in.coulomb.deltaDeg = 20;
     const int n = 8;
     Problem<double> pb(makeParams<double>(in), n, 1, 0, 8, 0, 1);
     pb.setState([](double x, double) { return Primitive{x < 4 ? 1.0 : 0.0, 0.5, 0}; });

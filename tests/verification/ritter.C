@@ -78,7 +78,7 @@ void table(Counter& test, bool activePassive)
     in.earthPressure = activePassive
         ? EarthPressureModel::activePassive : EarthPressureModel::isotropic;
     in.phiDeg = 35;
-    in.deltaDeg = 0;
+    in.coulomb.deltaDeg = 0;
     // Frictionless: no static resistance, and so no K = 1 for material at
     // rest (earthPressure.H); the reservoir at rest is active like the fan
     in.staticResistance = false;

@@ -95,7 +95,7 @@ void frictionInTime(Counter& test)
     struct Law { const char* name; ModelInput in; };
     std::vector<Law> laws(3);
     laws[0].name = "Coulomb, delta = 20 deg";
-    laws[0].in.deltaDeg = 20;
+    laws[0].in.coulomb.deltaDeg = 20;
     laws[1].name = "Voellmy, mu = 0.2, xi = 500";
     laws[1].in.frictionLaw = FrictionLaw::Voellmy;
     laws[1].in.voellmy.mu = 0.2;
@@ -255,7 +255,7 @@ void bumpFlows(Counter& test)
         in.g = 9.81;
         in.earthPressure = EarthPressureModel::activePassive;
         in.phiDeg = f.phi;
-        in.deltaDeg = f.phi;
+        in.coulomb.deltaDeg = f.phi;
         const double Kx = makeParams<double>(in).K.kx[0];
         std::printf("\n2%s: delta = phi = %g deg, Kx = %.4f, h = %g m, u = %g m/s, "
                     "bump 0.05 m, t = %g s\n", f.name, f.phi, Kx, f.h0, f.u0, f.tEnd);

@@ -41,7 +41,7 @@ void run(int nMesh, bool holdResting, Counter& test)
     ModelInput in;
     in.g = 9.81;
     in.phiDeg = 40;
-    in.deltaDeg = 40;
+    in.coulomb.deltaDeg = 40;
     in.holdResting = holdResting;
     const Params<double> p = makeParams<double>(in);
 

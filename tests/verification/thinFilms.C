@@ -125,7 +125,7 @@ void chute(Counter& test, bool voellmy)
     in.g = 9.81;
     in.lambda = 0;
     in.phiDeg = 35;
-    in.deltaDeg = 19;
+    in.coulomb.deltaDeg = 19;
     if (voellmy)
     {
         in.frictionLaw = FrictionLaw::Voellmy;
@@ -252,7 +252,7 @@ void inclinedPlane(Counter& test)
     ModelInput in;
     in.g = 1;
     in.phiDeg = 30;
-    in.deltaDeg = 30;
+    in.coulomb.deltaDeg = 30;
     const int nx = 120, ny = 56;
     Problem<double> pb(makeParams<double>(in), nx, ny, 0, 30, -7, 7);
     pb.setInclination(planeZeta);

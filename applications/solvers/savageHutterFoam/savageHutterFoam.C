@@ -35,6 +35,10 @@ Description
 Usage
     savageHutterFoam [-backend auto|cpu|cuda] [-precision double|single]
                      [-logInterval seconds] [-parallel] [-ensemble]
+    savageHutterFoam -listFrictionLaws
+
+    -listFrictionLaws: the friction laws of this build with their
+    coefficients, defaults and rules (no case needed).
 
     -ensemble: the members of system/ensembleDict (docs/design.md section 6)
     run together, each written under ensemble/member<k>/, the statistics
@@ -78,6 +82,10 @@ int main(int argc, char *argv[])
     runOptions::declare();
     #include "setRootCase.H"
     runSignals::install();   // again: argList sets OpenFOAM's own
+    if (listFrictionLaws(args))
+    {
+        return 0;
+    }
     const runOptions options = runOptions::read(args);
     const controlSettings control = prepareStart(args);
     endIfSignalled("checking the case's time directories");

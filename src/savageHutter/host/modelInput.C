@@ -1,6 +1,7 @@
 #include "modelInput.H"
 
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 namespace sh
@@ -9,7 +10,7 @@ namespace sh
 namespace
 {
 
-constexpr double degToRad = 3.14159265358979323846/180.0;
+constexpr double degToRad = degreesToRadians;
 
 std::string joined(const std::vector<std::string>& names)
 {
@@ -87,75 +88,137 @@ void requirePositive(const std::string& keyword, double x, const char* what)
     }
 }
 
-//- The coefficients of the selected law (only those: another law's
-//  defaults are not the user's input)
-void checkFrictionLaw(const ModelInput& in)
+void requireNonNegative(const std::string& keyword, double x, const char* what)
 {
-    switch (in.frictionLaw)
+    if (!(x >= 0))
     {
-        case FrictionLaw::Coulomb:
-            requireAngle("delta", in.deltaDeg, "basal friction angle");
-            break;
-
-        case FrictionLaw::PouliquenForterre:
-        {
-            const ModelInput::PouliquenForterreInput& pf =
-                in.pouliquenForterre;
-            requireAngle("zeta1", pf.zeta1Deg, "friction angle zeta1");
-            requireAngle("zeta2", pf.zeta2Deg, "friction angle zeta2");
-            requireAngle("zeta3", pf.zeta3Deg, "friction angle zeta3");
-            if (!(pf.zeta1Deg < pf.zeta2Deg))
-            {
-                throw InputError
-                (
-                    "zeta1",
-                    "zeta1 = " + str(pf.zeta1Deg) + " deg must be below"
-                    " zeta2 = " + str(pf.zeta2Deg) + " deg: mu_stop (eq. 40)"
-                    " falls from tan(zeta2) at h = 0 to tan(zeta1) in deep"
-                    " flows"
-                );
-            }
-            if (pf.zeta3Deg < pf.zeta1Deg)
-            {
-                throw InputError
-                (
-                    "zeta3",
-                    "zeta3 = " + str(pf.zeta3Deg) + " deg must not be below"
-                    " zeta1 = " + str(pf.zeta1Deg) + " deg: the static"
-                    " coefficient mu_start (eq. 41) would fall below the"
-                    " dynamic mu_stop (eq. 40) in deep layers"
-                );
-            }
-            requirePositive("L", pf.L, "length scale L");
-            requirePositive("beta", pf.beta, "Froude number coefficient beta");
-            requirePositive("gamma", pf.gamma, "exponent gamma");
-            break;
-        }
-
-        case FrictionLaw::Voellmy:
-            if (!(in.voellmy.mu >= 0))
-            {
-                throw InputError
-                (
-                    "mu",
-                    "friction coefficient mu must not be negative, got "
-                  + str(in.voellmy.mu)
-                );
-            }
-            requirePositive("xi", in.voellmy.xi, "turbulence coefficient xi");
-            break;
+        throw InputError
+        (
+            keyword, std::string(what) + " must not be negative, got " + str(x)
+        );
     }
 }
 
-} // namespace
-
-
-std::string numberString(double x)
+//- A coefficient within its bound
+void requireBound(const char* keyword, double x, Bound bound, const char* what)
 {
+    switch (bound)
+    {
+        case Bound::angle: requireAngle(keyword, x, what); break;
+        case Bound::positive: requirePositive(keyword, x, what); break;
+        case Bound::nonNegative: requireNonNegative(keyword, x, what); break;
+        case Bound::finite: break;
+    }
+}
+
+const char* boundText(Bound bound)
+{
+    switch (bound)
+    {
+        case Bound::angle: return "[0, 90)";
+        case Bound::positive: return "> 0";
+        case Bound::nonNegative: return ">= 0";
+        case Bound::finite: return "finite";
+    }
+    return "";
+}
+
+//- Calls f(Law()) for the selected law
+template<class F>
+void withFrictionLaw(FrictionLaw law, F&& f)
+{
+    forEachFrictionLaw
+    (
+        [&](auto l)
+        {
+            if (frictionLawOf(l) == law)
+            {
+                f(l);
+            }
+        }
+    );
+}
+
+//- The coefficients of the selected law (only those: another law's
+//  defaults are not the user's input): each within its bound, then the
+//  law's rules between them
+void checkFrictionLaw(const ModelInput& in)
+{
+    withFrictionLaw
+    (
+        in.frictionLaw,
+        [&](auto law)
+        {
+            using Law = decltype(law);
+            const typename Law::Input& li = in.of(law);
+            for (const auto& c : Law::coefficients)
+            {
+                requireBound(c.keyword, li.*c.value, c.bound, c.what);
+            }
+            Law::validate(li);
+        }
+    );
+}
+
+//- The basal friction angle of the selected law for earthPressure
+//  activePassive: its keyword and value [deg], or why there is none
+struct BasalFrictionAngle
+{
+    const char* keyword = nullptr;
+    double deg = 0;
+    const char* whyNot = nullptr;
+};
+
+BasalFrictionAngle basalFrictionAngle(const ModelInput& in)
+{
+    BasalFrictionAngle a;
+    withFrictionLaw
+    (
+        in.frictionLaw,
+        [&](auto law)
+        {
+            using Law = decltype(law);
+            const FrictionAngle& angle = Law::frictionAngle;
+            if (angle.kind == FrictionAngle::none)
+            {
+                a.whyNot = angle.whyNot;
+                return;
+            }
+            for (const auto& c : Law::coefficients)
+            {
+                if (std::string(c.keyword) == angle.keyword)
+                {
+                    const double x = in.of(law).*c.value;
+                    a.keyword = angle.keyword;
+                    a.deg = angle.kind == FrictionAngle::degrees
+                        ? x
+                        : std::atan(x)/degToRad;
+                }
+            }
+        }
+    );
+    return a;
+}
+
+//- A number as the listing writes it: the shortest form that reads back
+//  as the same double
+std::string exactString(double x)
+{
+    for (int digits = 6; digits < 17; ++digits)
+    {
+        std::ostringstream os;
+        os << std::setprecision(digits) << x;
+        if (std::stod(os.str()) == x)
+        {
+            return os.str();
+        }
+    }
     std::ostringstream os;
-    os << x;
+    os << std::setprecision(17) << x;
     return os.str();
 }
+
+} // namespace
 
 
 const std::vector<std::string>& limiterNames()
@@ -172,10 +235,15 @@ const std::vector<std::string>& earthPressureNames()
 
 const std::vector<std::string>& frictionLawNames()
 {
-    static const std::vector<std::string> n
+    static const std::vector<std::string> n = []()
     {
-        "Coulomb", "PouliquenForterre", "Voellmy"
-    };
+        std::vector<std::string> names;
+        forEachFrictionLaw
+        (
+            [&](auto law) { names.push_back(decltype(law)::name); }
+        );
+        return names;
+    }();
     return n;
 }
 
@@ -216,16 +284,16 @@ Params<Real> makeParams(const ModelInput& in)
     requireFinite("epsilon", in.epsilon);
     requireFinite("lambda", in.lambda);
     requireFinite("phi", in.phiDeg);
-    requireFinite("delta", in.deltaDeg);
-    const ModelInput::PouliquenForterreInput& pf = in.pouliquenForterre;
-    requireFinite("zeta1", pf.zeta1Deg);
-    requireFinite("zeta2", pf.zeta2Deg);
-    requireFinite("zeta3", pf.zeta3Deg);
-    requireFinite("L", pf.L);
-    requireFinite("beta", pf.beta);
-    requireFinite("gamma", pf.gamma);
-    requireFinite("mu", in.voellmy.mu);
-    requireFinite("xi", in.voellmy.xi);
+    forEachFrictionLaw
+    (
+        [&](auto law)
+        {
+            for (const auto& c : decltype(law)::coefficients)
+            {
+                requireFinite(c.keyword, in.of(law).*c.value);
+            }
+        }
+    );
     requireFinite("hDry", in.hDry);
     requireFinite("maxCo", in.cfl);
     requireFinite("arrivalThreshold", in.arrivalThreshold);
@@ -254,31 +322,26 @@ Params<Real> makeParams(const ModelInput& in)
     checkFrictionLaw(in);
 
     // The basal friction angle of the active/passive coefficients
-    double deltaDeg = in.deltaDeg;
-    std::string deltaKeyword = "delta";
-    if (in.frictionLaw == FrictionLaw::Voellmy)
-    {
-        deltaDeg = std::atan(in.voellmy.mu)/degToRad;
-        deltaKeyword = "mu";
-    }
+    const BasalFrictionAngle angle = basalFrictionAngle(in);
+    const double deltaDeg = angle.deg;
     if (in.earthPressure == EarthPressureModel::activePassive)
     {
-        if (in.frictionLaw == FrictionLaw::PouliquenForterre)
+        if (!angle.keyword)
         {
             throw InputError
             (
                 "earthPressure",
                 "activePassive needs one basal friction angle (eqs 7-8),"
-                " which frictionModel PouliquenForterre does not have (its"
-                " mu varies with h and Fr). Use earthPressure isotropic"
-                " (K = 1, as Johnson & Gray 2011 and Zhai et al. 2014 do)"
+                " which frictionModel " + toString(in.frictionLaw)
+              + " does not have (" + angle.whyNot + "). Use earthPressure"
+                " isotropic (K = 1)"
             );
         }
         if (deltaDeg > in.phiDeg)
         {
             throw InputError
             (
-                deltaKeyword,
+                angle.keyword,
                 "basal friction angle delta = " + str(deltaDeg)
               + " deg exceeds the internal friction angle phi = "
               + str(in.phiDeg) + " deg: the active/passive earth pressure"
@@ -349,20 +412,15 @@ Params<Real> makeParams(const ModelInput& in)
 
     p.friction = FrictionParams<Real>();
     p.friction.law = in.frictionLaw;
-    p.friction.coulomb.tanDelta = Real(std::tan(in.deltaDeg*degToRad));
-    {
-        PouliquenForterreParams<Real>& f = p.friction.pouliquenForterre;
-        const double t1 = std::tan(pf.zeta1Deg*degToRad);
-        f.tanZeta1 = Real(t1);
-        f.tanZeta3 = Real(std::tan(pf.zeta3Deg*degToRad));
-        f.dTan = Real(std::tan(pf.zeta2Deg*degToRad) - t1);
-        f.L = Real(pf.L);
-        f.beta = Real(pf.beta);
-        f.gamma = Real(pf.gamma);
-        f.epsG = Real(in.epsilon*in.g);
-    }
-    p.friction.voellmy.mu = Real(in.voellmy.mu);
-    p.friction.voellmy.gOverXi = Real(in.g/in.voellmy.xi);
+    const FrictionContext context{in.g, in.epsilon};
+    forEachFrictionLaw
+    (
+        [&](auto law)
+        {
+            p.friction.of(law) =
+                decltype(law)::template params<Real>(in.of(law), context);
+        }
+    );
     p.jet = JetParams<Real>();
     p.limiter = in.limiter;
     p.stoppingCriterion = in.stoppingCriterion;
@@ -374,6 +432,89 @@ Params<Real> makeParams(const ModelInput& in)
     p.rho = Real(in.rho);
     return p;
 }
+
+std::string frictionCoeffsExample(FrictionLaw selected)
+{
+    std::string s = "{";
+    withFrictionLaw
+    (
+        selected,
+        [&](auto law)
+        {
+            using Law = decltype(law);
+            const typename Law::Input defaults{};
+            for (const auto& c : Law::coefficients)
+            {
+                if (c.required)
+                {
+                    s += std::string(" ") + c.keyword + " "
+                       + exactString(defaults.*c.value) + ";";
+                }
+            }
+        }
+    );
+    return s + " }";
+}
+
+
+std::string describeFrictionLaws()
+{
+    std::ostringstream os;
+    os  << "Friction laws: frictionModel <name> and <name>Coeffs { ... } in\n"
+        << "constant/transportProperties; the law's header is\n"
+        << "src/savageHutter/physics/frictionLaws/<name>.H (adding a law:\n"
+        << "docs/frictionLaws.md).  Per law: its coefficients (keyword,"
+        << " default,\nrequired or optional, unit, bound, what it is), the"
+        << " coefficient that\nearthPressure activePassive takes the basal"
+        << " friction angle from, and\nits edge cases: a coefficient's value"
+        << " accepted or rejected, with\nearthPressure isotropic or with"
+        << " activePassive and phi 30.\n";
+    forEachFrictionLaw
+    (
+        [&](auto law)
+        {
+            using Law = decltype(law);
+            const typename Law::Input defaults{};
+            os  << "\nfrictionModel " << Law::name << "\n"
+                << "    " << Law::description << "\n";
+            for (const auto& c : Law::coefficients)
+            {
+                os  << "    coefficient " << std::left
+                    << std::setw(8) << c.keyword << " "
+                    << std::setw(8) << exactString(defaults.*c.value) << " "
+                    << std::setw(8) << (c.required ? "required" : "optional")
+                    << " " << std::setw(5) << (*c.unit ? c.unit : "-")
+                    << " " << std::setw(7) << boundText(c.bound)
+                    << " " << c.what << "\n";
+            }
+            if (Law::frictionAngle.kind != FrictionAngle::none)
+            {
+                os  << "    activePassive " << Law::frictionAngle.keyword
+                    << (
+                           Law::frictionAngle.kind == FrictionAngle::degrees
+                         ? " (the angle itself)\n"
+                         : " (delta = atan of it)\n"
+                       );
+            }
+            else
+            {
+                os  << "    activePassive none: " << Law::frictionAngle.whyNot
+                    << "\n";
+            }
+            for (const EdgeCase& e : Law::edgeCases)
+            {
+                os  << "    edge " << std::left << std::setw(12) << e.name
+                    << " " << std::setw(8) << e.keyword << " "
+                    << std::setw(8) << exactString(e.value) << " "
+                    << (e.accepted ? "accepted" : "rejected") << " "
+                    << (e.activePassive ? "activePassive" : "isotropic")
+                    << "\n";
+            }
+        }
+    );
+    return os.str();
+}
+
 
 template Params<double> makeParams<double>(const ModelInput&);
 template Params<float> makeParams<float>(const ModelInput&);

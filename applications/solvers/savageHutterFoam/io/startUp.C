@@ -6,6 +6,7 @@
 #include "anyProcessor.H"
 #include "runSignals.H"
 #include "timeDirectories.H"
+#include "host/modelInput.H"
 
 namespace Foam
 {
@@ -37,6 +38,11 @@ void runOptions::declare()
         "ensemble",
         "run the members of system/ensembleDict together (ensemble/)"
     );
+    argList::addBoolOption
+    (
+        "listFrictionLaws",
+        "list the friction laws, their coefficients and rules, and exit"
+    );
 }
 
 
@@ -60,6 +66,17 @@ runOptions runOptions::read(const argList& args)
             << "Valid choices: (double single)" << nl << exit(FatalError);
     }
     return o;
+}
+
+
+bool listFrictionLaws(const argList& args)
+{
+    if (!args.found("listFrictionLaws"))
+    {
+        return false;
+    }
+    Info<< sh::describeFrictionLaws().c_str() << nl << "End" << nl << endl;
+    return true;
 }
 
 

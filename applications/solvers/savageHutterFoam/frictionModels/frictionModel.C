@@ -48,9 +48,10 @@ autoPtr<frictionModel> frictionModel::New(const dictionary& tp)
         FatalIOErrorInFunction(tp)
             << "frictionModel " << name << " needs the sub-dictionary '"
             << coeffsName << "' with its coefficients, e.g." << nl
-            << "    " << coeffsName << " { ... }" << nl
-            << "(see src/savageHutter/physics/frictionLaws/" << name
-            << ".H)" << nl
+            << "    " << coeffsName << " "
+            << sh::frictionCoeffsExample(sh::parseFrictionLaw(name)).c_str()
+            << nl << "(see src/savageHutter/physics/frictionLaws/" << name
+            << ".H, or savageHutterFoam -listFrictionLaws)" << nl
             << exit(FatalIOError);
     }
     return autoPtr<frictionModel>(cstrIter()(tp.subDict(coeffsName)));
@@ -69,7 +70,11 @@ scalar frictionModel::coeff(const word& key) const
 }
 
 
-void frictionModel::checkKeywords(const wordList& valid) const
+void frictionModel::checkKeywords
+(
+    const wordList& valid,
+    const wordList& required
+) const
 {
     for (const word& key : coeffs_.toc())
     {
@@ -82,7 +87,7 @@ void frictionModel::checkKeywords(const wordList& valid) const
                 << exit(FatalIOError);
         }
     }
-    for (const word& key : valid)
+    for (const word& key : required)
     {
         coeff(key);
     }
