@@ -113,7 +113,8 @@ bool useCudaBackend(const word& backend, const bool decomposed, std::string& why
                 Info<< " (processor 0; each processor the GPU of its rank"
                     << " on the node mod " << devices << ")";
             }
-            Info<< nl;
+            // Flushed: a log watched during start-up sees it
+            Info<< endl;
             if (sizeof(Real) == 8 && fp32PerFp64 >= 16)
             {
                 Info<< "    This GPU computes in double precision at 1/"
