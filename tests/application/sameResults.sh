@@ -38,7 +38,7 @@
 #                    [-backend cpu|cuda] [-precision double|single]
 #                    [-solverOnly] [tutorial ...]
 #------------------------------------------------------------------------------
-project="$1"
+project="$(cd "$1" && pwd)" || exit 2  # absolute: listing() compares from the run's folder
 work="$2"
 manifest="$3"
 shift 3
@@ -82,12 +82,14 @@ solver="$(command -v savageHutterFoam)" \
 
 #- listing <dir> <tutorial>: "path sha256" of every file below dir that the
 #  run wrote, sorted: the logs aside, and the tutorial's own files (inputs,
-#  scripts) where they are unchanged copies
+#  scripts) where they are unchanged copies; sorted in the C locale, so that
+#  a manifest recorded on one machine compares line by line on another
+#  (a UTF-8 locale's collation puts U, UMax between regime and hU)
 listing()
 {
     (
         cd "$1" || exit 1
-        find . -type f ! -name 'log.*' ! -name '*.log' | sort \
+        find . -type f ! -name 'log.*' ! -name '*.log' | LC_ALL=C sort \
             | while IFS= read -r f
             do
                 cmp -s "$f" "$project/tutorials/$2/$f" || printf '%s\0' "$f"
@@ -161,8 +163,8 @@ do
     for t in "${tutorials[@]}"
     do
         key="$precision/$t/"
-        old="$(grep "^$key" "$manifest")"
-        new="$(grep "^$key" "$out")"
+        old="$(grep "^$key" "$manifest" | LC_ALL=C sort)"
+        new="$(grep "^$key" "$out" | LC_ALL=C sort)"
         if [ -z "$new" ]
         then
             continue  # its Allrun failed: counted above
