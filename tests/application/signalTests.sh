@@ -71,6 +71,31 @@ incomplete()
     echo "$out"
 }
 
+#- startRun <case> <log>: savageHutterFoam in <case> in the background, its
+#  output in <case>/<log>; its process id in $pid (the solver's own: exec)
+startRun()
+{
+    (cd "$1" && exec savageHutterFoam -backend cpu > "$2" 2>&1) &
+    pid=$!
+}
+
+#- startPastWrite <case> <time> <seconds> <polls> <delay>: startRun with
+#  log.savageHutterFoam, then waits for its time loop (<seconds> at most)
+#  and for its directory <time> (<polls> tenths of a second at most), then
+#  <delay> seconds more
+startPastWrite()
+{
+    startRun "$1" log.savageHutterFoam
+    waitFor "$1/log.savageHutterFoam" "^Starting time loop" "$3"
+    local i
+    for i in $(seq "$4")
+    do
+        [ -d "$1/$2" ] && break
+        sleep 0.1
+    done
+    sleep "$5"
+}
+
 # -- SIGINT: write the state and end the run -----------------------------------
 d="$work/sigint"
 makeCase "$d" 256 32 || { cat "$d.setup.log"; fail "sigint: set-up failed"; }
@@ -86,16 +111,8 @@ attempts=0
 while :
 do
     attempts=$((attempts + 1))
-    (cd "$d" && exec savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1) &
-    pid=$!
-    waitFor "$log" "^Starting time loop" 60
     # Past the first write time, so that the stop has one before it
-    for i in $(seq 300)
-    do
-        [ -d "$d/0.05" ] && break
-        sleep 0.1
-    done
-    sleep 0.3
+    startPastWrite "$d" 0.05 60 300 0.3
     t0=$(date +%s.%N)
     kill -INT "$pid"
     wait "$pid"
@@ -187,8 +204,7 @@ do
     at="${rest%%:*}"
     stage="${rest#*:}"
     log="$d/log.startUp.$sig"
-    (cd "$d" && exec savageHutterFoam -backend cpu > "log.startUp.$sig" 2>&1) &
-    pid=$!
+    startRun "$d" "log.startUp.$sig"
     waitFor "$log" "$at" 120
     kill -"$sig" "$pid"
     wait "$pid"
@@ -211,15 +227,7 @@ setEntry "$d/system/controlDict" endTime 100
 setEntry "$d/system/controlDict" writeInterval 0.005
 log="$d/log.savageHutterFoam"
 staging="$d/.savageHutterFoam-writing"
-(cd "$d" && exec savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1) &
-pid=$!
-waitFor "$log" "^Starting time loop" 120
-for i in $(seq 600)
-do
-    [ -d "$d/0.005" ] && break
-    sleep 0.1
-done
-sleep 0.2
+startPastWrite "$d" 0.005 120 600 0.2
 kill -INT "$pid"
 # The second as soon as the stop's directory is being written: after the
 # log says so (a write time's directory may be under way before), when the
@@ -419,8 +427,7 @@ do
         # Killed while writing its at-th directory (the staging directory
         # there, watched with builtins only)
         rm -rf "$staging"
-        (cd "$d" && exec savageHutterFoam -backend cpu > "log.kill$at" 2>&1) &
-        pid=$!
+        startRun "$d" "log.kill$at"
         seen=0
         inside=false
         end=$((SECONDS + 60))

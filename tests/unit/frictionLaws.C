@@ -305,32 +305,15 @@ bool close(double a, double b, double tol)
     return b == 0 ? std::fabs(a) <= tol : relClose(a, b, tol);
 }
 
-//- Every check of one law, from its header alone
+//- The worked examples of the header against the law (double 1e-13,
+//  float 1e-5); how many it gives
 template<class Law>
-void checkLaw(Counter& t, int& exercised)
+int checkExamples
+(
+    Counter& t, const Params<double>& p, const Params<float>& pf
+)
 {
     const std::string name = Law::name;
-    const FrictionLaw law = frictionLawOf(Law());
-    std::printf("\n%s: %s\n", Law::name, Law::description);
-
-    t.check
-    (
-        parseFrictionLaw(name) == law && toString(law) == name,
-        name + ": its name selects it"
-    );
-
-    const ModelInput in = lawInput<Law>();
-    const std::string defaultsRejected = rejection(in);
-    t.check(defaultsRejected.empty(), name + ": its defaults are valid input");
-    if (!defaultsRejected.empty())
-    {
-        return;
-    }
-    const Params<double> p = makeParams<double>(in);
-    const Params<float> pf = makeParams<float>(in);
-    const LawParams<Law, double>& lp = p.friction.of(Law());
-
-    // The worked examples of the header
     int nExamples = 0;
     std::printf("  %8s %8s %6s %18s %18s %12s\n", "h", "|v|", "zeta", "mu", "example", "drag");
     for (const FrictionExample& e : Law::examples)
@@ -356,8 +339,19 @@ void checkLaw(Counter& t, int& exercised)
         );
         ++nExamples;
     }
+    return nExamples;
+}
 
-    // The dispatch, the strength at rest, finite non-negative values
+//- The dispatch of FrictionParams to the law's functions, the strength at
+//  rest, finite non-negative values
+template<class Law>
+void checkDispatch
+(
+    Counter& t, const Params<double>& p, const Params<float>& pf
+)
+{
+    const std::string name = Law::name;
+    const LawParams<Law, double>& lp = p.friction.of(Law());
     bool dispatch = true;
     bool rest = true;
     bool finite = true;
@@ -391,8 +385,13 @@ void checkLaw(Counter& t, int& exercised)
     t.check(dispatch, name + ": FrictionParams dispatches to the law's mu, staticMu and dragCoefficient");
     t.check(rest, name + ": material at rest has the strength staticMu (mu at speed 0)");
     t.check(finite, name + ": mu and the drag coefficient finite and >= 0 (h 0 to 100, |v| 0 to 30, zeta 0 to 60 deg)");
+}
 
-    // Each coefficient outside its bound, and not finite
+//- Each coefficient outside its bound, and not finite, rejected naming it
+template<class Law>
+void checkBounds(Counter& t, const ModelInput& in)
+{
+    const std::string name = Law::name;
     for (const auto& c : Law::coefficients)
     {
         std::vector<double> bad{std::nan(""), 1e31, -1e31};
@@ -417,8 +416,13 @@ void checkLaw(Counter& t, int& exercised)
         }
         t.check(all, name + ": " + c.keyword + " outside its bound or not finite rejected, naming " + c.keyword);
     }
+}
 
-    // The edge cases of the header
+//- The edge cases of the header
+template<class Law>
+void checkEdgeCases(Counter& t)
+{
+    const std::string name = Law::name;
     for (const EdgeCase& e : Law::edgeCases)
     {
         ModelInput edge = lawInput<Law>(e.activePassive);
@@ -440,8 +444,14 @@ void checkLaw(Counter& t, int& exercised)
           + (e.accepted ? ", accepted" : ", rejected naming " + std::string(e.keyword))
         );
     }
+}
 
-    // earthPressure activePassive
+//- earthPressure activePassive: with the law's friction angle, or refused
+//  without one
+template<class Law>
+void checkActivePassive(Counter& t)
+{
+    const std::string name = Law::name;
     ModelInput ap = lawInput<Law>(true);
     ap.phiDeg = 89;
     if (Law::frictionAngle.kind != FrictionAngle::none)
@@ -462,9 +472,17 @@ void checkLaw(Counter& t, int& exercised)
     {
         t.check(rejection(ap) == "earthPressure", name + ": no friction angle, activePassive refused naming earthPressure");
     }
+}
 
-    // The scheme: a uniform layer at rest on a slope below and above its
-    // static friction (4x4 cells, transmissive sides)
+//- The scheme: a uniform layer at rest on a slope below and above its
+//  static friction (4x4 cells, transmissive sides)
+template<class Law>
+void checkStaticFriction
+(
+    Counter& t, const ModelInput& in, const Params<double>& p
+)
+{
+    const std::string name = Law::name;
     const double h0 = 0.01;
     const double muS = staticFrictionCoefficient(p.friction, h0);
     const double holdDeg = std::atan(0.9*muS)/deg;
@@ -474,6 +492,38 @@ void checkLaw(Counter& t, int& exercised)
     std::printf("  static mu(h = %g) = %.6f: at %.3f deg u = %g, at %.3f deg u = %g\n", h0, muS, holdDeg, holds.u, flowDeg, flows.u);
     t.check(holds.atRest && holds.uniform, name + ": a layer at rest below its static friction holds exactly");
     t.check(!flows.atRest && flows.u > 0 && std::isfinite(flows.u) && flows.uniform, name + ": above it the layer starts to flow downslope");
+}
+
+//- Every check of one law, from its header alone
+template<class Law>
+void checkLaw(Counter& t, int& exercised)
+{
+    const std::string name = Law::name;
+    const FrictionLaw law = frictionLawOf(Law());
+    std::printf("\n%s: %s\n", Law::name, Law::description);
+
+    t.check
+    (
+        parseFrictionLaw(name) == law && toString(law) == name,
+        name + ": its name selects it"
+    );
+
+    const ModelInput in = lawInput<Law>();
+    const std::string defaultsRejected = rejection(in);
+    t.check(defaultsRejected.empty(), name + ": its defaults are valid input");
+    if (!defaultsRejected.empty())
+    {
+        return;
+    }
+    const Params<double> p = makeParams<double>(in);
+    const Params<float> pf = makeParams<float>(in);
+
+    const int nExamples = checkExamples<Law>(t, p, pf);
+    checkDispatch<Law>(t, p, pf);
+    checkBounds<Law>(t, in);
+    checkEdgeCases<Law>(t);
+    checkActivePassive<Law>(t);
+    checkStaticFriction<Law>(t, in, p);
 
     t.check(nExamples > 0, name + ": its header gives worked examples");
     if (nExamples > 0)

@@ -5,25 +5,9 @@
 #include "hazardInput.H"
 #include "timeSelector.H"
 #include "IOdictionary.H"
-#include "vector2D.H"
 
 namespace Foam
 {
-
-IOobject fieldIO(const fvMesh& mesh, const word& instance, const word& name)
-{
-    return IOobject
-    (
-        name, instance, mesh, IOobject::MUST_READ, IOobject::NO_WRITE
-    );
-}
-
-
-bool hasField(const fvMesh& mesh, const word& instance, const word& name)
-{
-    return fieldIO(mesh, instance, name).typeHeaderOk<volScalarField>(true);
-}
-
 
 namespace
 {
@@ -66,27 +50,6 @@ void missingFieldsError
             << nl;
     }
     FatalError << "Nothing written." << nl << exit(FatalError);
-}
-
-
-//- The numeric time directories (times() also lists constant)
-instantList numericTimes(const Time& runTime)
-{
-    instantList numeric;
-    for (const instant& t : runTime.times())
-    {
-        if (t.name() != runTime.constant())
-        {
-            numeric.append(t);
-        }
-    }
-    if (numeric.empty())
-    {
-        FatalErrorInFunction
-            << "No time directory in " << runTime.path() << nl
-            << exit(FatalError);
-    }
-    return numeric;
 }
 
 } // End anonymous namespace
@@ -177,27 +140,11 @@ hazardTimes selectTimes
     times.numeric = numericTimes(runTime);
     if (!statistics && (args.found("time") || args.found("latestTime")))
     {
-        for
-        (
-            const instant& t
-          : timeSelector::select(runTime.times(), args, runTime.constant())
-        )
-        {
-            if (t.name() != runTime.constant())
-            {
-                times.chosen.append(t);
-            }
-        }
+        times.chosen = selectedTimes(runTime, args, times.numeric);
     }
     else
     {
         times.chosen.append(times.numeric.last());
-    }
-    if (times.chosen.empty())
-    {
-        FatalErrorInFunction
-            << "No time selected in " << runTime.path() << "; times: "
-            << flatOutput(times.numeric) << nl << exit(FatalError);
     }
     times.first = times.numeric.first().name();
     Info<< "Times " << flatOutput(times.chosen) << " (release from time "
@@ -208,28 +155,9 @@ hazardTimes selectTimes
 
 hazardTerrain readTerrain(const Time& runTime, const fvMesh& mesh)
 {
-    const IOdictionary mapDict
-    (
-        IOobject
-        (
-            "terrainMapping", runTime.constant(), runTime,
-            IOobject::MUST_READ, IOobject::NO_WRITE
-        )
-    );
-    const List<vector2D> table = mapDict.get<List<vector2D>>("inclination");
-    std::vector<double> xT, zT;
-    for (const vector2D& p : table)
-    {
-        xT.push_back(p.x());
-        zT.push_back(p.y());
-    }
-    const vector o = mapDict.get<vector>("origin");
-    const vector2D t = mapDict.get<vector2D>("tangent");
+    const IOdictionary mapDict(terrainMappingIO(runTime));
     hazardTerrain ht;
-    ht.surface = terrain::referenceSurface
-    (
-        {o.x(), o.y(), o.z()}, t.x(), t.y(), xT, zT
-    );
+    ht.surface = mappingSurface(mapDict);
     ht.cellSize = mapDict.get<scalar>("cellSize");
     ht.nx = mapDict.get<label>("nx");
     ht.ny = mapDict.get<label>("ny");

@@ -344,10 +344,8 @@ IOobject fieldIO(const fvMesh& mesh, const word& name)
     );
 }
 
-} // namespace
-
-
-int main(int argc, char *argv[])
+//- setAvalancheFields' note and options: -dict; serial
+void declareOptions()
 {
     argList::addNote
     (
@@ -356,24 +354,27 @@ int main(int argc, char *argv[])
     );
     argList::addOption("dict", "file", "alternative dictionary");
     argList::noParallel();
+}
 
-    #include "setRootCase.H"
-    #include "createTime.H"
-    #include "createMesh.H"
-
+//- The dictionary of the shapes: system/setAvalancheFieldsDict, or the
+//  file -dict names
+IOobject shapesDictIO(const argList& args, const Time& runTime)
+{
     const fileName dictFile =
         args.getOrDefault<fileName>
         (
             "dict", runTime.system()/"setAvalancheFieldsDict"
         );
     Info<< "Reading " << dictFile << nl << endl;
-    const IOdictionary dict
+    return IOobject
     (
-        IOobject
-        (
-            dictFile, runTime, IOobject::MUST_READ, IOobject::NO_WRITE
-        )
+        dictFile, runTime, IOobject::MUST_READ, IOobject::NO_WRITE
     );
+}
+
+//- The dictionary has entries h, U and zb only
+void checkEntries(const dictionary& dict)
+{
     for (const word& key : dict.toc())
     {
         if (!wordList({"h", "U", "zb"}).found(key))
@@ -383,14 +384,16 @@ int main(int argc, char *argv[])
                 << nl << exit(FatalIOError);
         }
     }
+}
 
-    const volVectorField::Internal& C = mesh.C();
-
-    // Every field first, then the writes: a shape refused in one field
-    // leaves all of them as they were
+//- h of its shapes, which must give h >= 0; none where dict has no h
+autoPtr<volScalarField> thicknessField
+(
+    const dictionary& dict, const fvMesh& mesh,
+    const volVectorField::Internal& C
+)
+{
     autoPtr<volScalarField> h;
-    autoPtr<volVectorField> U;
-    autoPtr<volScalarField> zb;
     if (dict.found("h"))
     {
         h.reset(new volScalarField(fieldIO(mesh, "h"), mesh));
@@ -407,11 +410,34 @@ int main(int argc, char *argv[])
             }
         }
     }
+    return h;
+}
+
+//- U of its shapes; none where dict has no U
+autoPtr<volVectorField> velocityField
+(
+    const dictionary& dict, const fvMesh& mesh,
+    const volVectorField::Internal& C
+)
+{
+    autoPtr<volVectorField> U;
     if (dict.found("U"))
     {
         U.reset(new volVectorField(fieldIO(mesh, "U"), mesh));
         setField(dict, "U", vectorShapes, U(), C);
     }
+    return U;
+}
+
+//- zb of its shapes, created with zeroGradient patches where the case
+//  has none; none where dict has no zb
+autoPtr<volScalarField> bedField
+(
+    const dictionary& dict, const fvMesh& mesh,
+    const volVectorField::Internal& C
+)
+{
+    autoPtr<volScalarField> zb;
     if (dict.found("zb"))
     {
         IOobject io(fieldIO(mesh, "zb"));
@@ -433,7 +459,16 @@ int main(int argc, char *argv[])
         }
         setField(dict, "zb", scalarShapes, zb(), C);
     }
+    return zb;
+}
 
+//- The fields set, with h's volume and zb's range
+void writeFields
+(
+    const fvMesh& mesh, const autoPtr<volScalarField>& h,
+    const autoPtr<volVectorField>& U, const autoPtr<volScalarField>& zb
+)
+{
     if (h.valid())
     {
         Info<< "Writing h: volume " << gSum(h().primitiveField()*mesh.V()/
@@ -451,6 +486,29 @@ int main(int argc, char *argv[])
             << gMax(zb().primitiveField()) << "] m" << nl << endl;
         zb().write();
     }
+}
+
+} // namespace
+
+
+int main(int argc, char *argv[])
+{
+    declareOptions();
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+
+    const IOdictionary dict(shapesDictIO(args, runTime));
+    checkEntries(dict);
+
+    // Every field first, then the writes: a shape refused in one field
+    // leaves all of them as they were
+    const volVectorField::Internal& C = mesh.C();
+    const autoPtr<volScalarField> h = thicknessField(dict, mesh, C);
+    const autoPtr<volVectorField> U = velocityField(dict, mesh, C);
+    const autoPtr<volScalarField> zb = bedField(dict, mesh, C);
+    writeFields(mesh, h, U, zb);
 
     Info<< "End\n" << endl;
     return 0;

@@ -422,6 +422,75 @@ void writeRaster(const std::string& path, const Raster& r)
 }
 
 
+namespace
+{
+
+//- The rings of polygon p, the exterior first, each without the repeated
+//  first point of a closed ring
+Polygon rings(const OGRPolygon* p)
+{
+    Polygon poly;
+    for (int k = 0; k <= p->getNumInteriorRings(); ++k)
+    {
+        const OGRLinearRing* ring =
+            k == 0 ? p->getExteriorRing() : p->getInteriorRing(k - 1);
+        if (!ring)
+        {
+            continue;
+        }
+        Ring pts;
+        for (int i = 0; i < ring->getNumPoints(); ++i)
+        {
+            pts.push_back({ring->getX(i), ring->getY(i)});
+        }
+        // A closed ring repeats its first point
+        if (pts.size() > 1 && pts.front() == pts.back())
+        {
+            pts.pop_back();
+        }
+        poly.push_back(pts);
+    }
+    return poly;
+}
+
+//- The polygons of the layer's features (polygons and multipolygons),
+//  appended to polygons
+void layerPolygons(OGRLayer* layer, std::vector<Polygon>& polygons)
+{
+    const auto addPolygon = [&polygons](const OGRPolygon* p)
+    {
+        const Polygon poly = rings(p);
+        if (!poly.empty())
+        {
+            polygons.push_back(poly);
+        }
+    };
+    layer->ResetReading();
+    while (OGRFeature* f = layer->GetNextFeature())
+    {
+        const OGRGeometry* g = f->GetGeometryRef();
+        if (g)
+        {
+            const auto type = wkbFlatten(g->getGeometryType());
+            if (type == wkbPolygon)
+            {
+                addPolygon(g->toPolygon());
+            }
+            else if (type == wkbMultiPolygon)
+            {
+                for (const OGRPolygon* p : *g->toMultiPolygon())
+                {
+                    addPolygon(p);
+                }
+            }
+        }
+        OGRFeature::DestroyFeature(f);
+    }
+}
+
+} // namespace
+
+
 std::vector<Polygon> readPolygons
 (
     const std::string& path, std::string& wkt
@@ -445,34 +514,6 @@ std::vector<Polygon> readPolygons
         throw gdalError("cannot read " + path + " as a vector file" + lastError());
     }
     std::vector<Polygon> polygons;
-    const auto addPolygon = [&polygons](const OGRPolygon* p)
-    {
-        Polygon poly;
-        for (int k = 0; k <= p->getNumInteriorRings(); ++k)
-        {
-            const OGRLinearRing* ring =
-                k == 0 ? p->getExteriorRing() : p->getInteriorRing(k - 1);
-            if (!ring)
-            {
-                continue;
-            }
-            Ring pts;
-            for (int i = 0; i < ring->getNumPoints(); ++i)
-            {
-                pts.push_back({ring->getX(i), ring->getY(i)});
-            }
-            // A closed ring repeats its first point
-            if (pts.size() > 1 && pts.front() == pts.back())
-            {
-                pts.pop_back();
-            }
-            poly.push_back(pts);
-        }
-        if (!poly.empty())
-        {
-            polygons.push_back(poly);
-        }
-    };
     wkt.clear();
     bool first = true;
     for (OGRLayer* layer : ds->GetLayers())
@@ -491,27 +532,7 @@ std::vector<Polygon> readPolygons
                 " systems (layer " + layer->GetName() + ")"
             );
         }
-        layer->ResetReading();
-        while (OGRFeature* f = layer->GetNextFeature())
-        {
-            const OGRGeometry* g = f->GetGeometryRef();
-            if (g)
-            {
-                const auto type = wkbFlatten(g->getGeometryType());
-                if (type == wkbPolygon)
-                {
-                    addPolygon(g->toPolygon());
-                }
-                else if (type == wkbMultiPolygon)
-                {
-                    for (const OGRPolygon* p : *g->toMultiPolygon())
-                    {
-                        addPolygon(p);
-                    }
-                }
-            }
-            OGRFeature::DestroyFeature(f);
-        }
+        layerPolygons(layer, polygons);
     }
     if (polygons.empty())
     {

@@ -277,8 +277,12 @@ std::string toString(EarthPressureModel x) { return earthPressureNames().at(int(
 std::string toString(FrictionLaw x) { return frictionLawNames().at(int(x)); }
 
 
-template<class Real>
-Params<Real> makeParams(const ModelInput& in)
+namespace
+{
+
+//- Every number of the input finite and at most 1e30 in magnitude (the
+//  coefficients of every law: another law's are not checked further)
+void requireFiniteInput(const ModelInput& in)
 {
     requireFinite("g", in.g);
     requireFinite("epsilon", in.epsilon);
@@ -298,7 +302,12 @@ Params<Real> makeParams(const ModelInput& in)
     requireFinite("maxCo", in.cfl);
     requireFinite("arrivalThreshold", in.arrivalThreshold);
     requireFinite("rho", in.rho);
+}
 
+//- g, epsilon and phi in range, and the coefficients of the selected
+//  friction law
+void checkModel(const ModelInput& in)
+{
     if (in.g <= 0)
     {
         throw InputError("g", "gravity must be positive, got " + str(in.g));
@@ -320,10 +329,14 @@ Params<Real> makeParams(const ModelInput& in)
         );
     }
     checkFrictionLaw(in);
+}
 
-    // The basal friction angle of the active/passive coefficients
+//- The basal friction angle [deg] of the active/passive coefficients: the
+//  selected law's, which earthPressure activePassive needs (eqs 7-8) and
+//  which must not exceed phi there
+double checkedBasalFrictionAngle(const ModelInput& in)
+{
     const BasalFrictionAngle angle = basalFrictionAngle(in);
-    const double deltaDeg = angle.deg;
     if (in.earthPressure == EarthPressureModel::activePassive)
     {
         if (!angle.keyword)
@@ -337,12 +350,12 @@ Params<Real> makeParams(const ModelInput& in)
                 " isotropic (K = 1)"
             );
         }
-        if (deltaDeg > in.phiDeg)
+        if (angle.deg > in.phiDeg)
         {
             throw InputError
             (
                 angle.keyword,
-                "basal friction angle delta = " + str(deltaDeg)
+                "basal friction angle delta = " + str(angle.deg)
               + " deg exceeds the internal friction angle phi = "
               + str(in.phiDeg) + " deg: the active/passive earth pressure"
                 " coefficients (eqs 7-8) are then complex. Use delta <= phi,"
@@ -350,6 +363,12 @@ Params<Real> makeParams(const ModelInput& in)
             );
         }
     }
+    return angle.deg;
+}
+
+//- hDry, maxCo, arrivalThreshold and rho in range
+void checkNumericsAndMaps(const ModelInput& in)
+{
     if (in.hDry <= 0)
     {
         throw InputError
@@ -383,6 +402,45 @@ Params<Real> makeParams(const ModelInput& in)
             " got " + str(in.rho)
         );
     }
+}
+
+//- The earth pressure coefficients of the input (phi, delta [rad]) in Real
+template<class Real>
+void setEarthPressure
+(
+    const ModelInput& in, double phi, double delta,
+    EarthPressureCoeffs<Real>& pK
+)
+{
+    const EarthPressureCoeffs<double> K =
+        in.earthPressure == EarthPressureModel::activePassive
+      ? activePassiveCoeffs<double>(phi, delta)
+      : isotropicCoeffs<double>();
+    for (int a = 0; a < 2; ++a)
+    {
+        pK.kx[a] = Real(K.kx[a]);
+        for (int b = 0; b < 2; ++b)
+        {
+            pK.ky[a][b] = Real(K.ky[a][b]);
+        }
+    }
+    pK.kxMax = Real(K.kxMax);
+    pK.kyMax = Real(K.kyMax);
+    pK.dKx = Real(K.dKx);
+    pK.dKy = Real(K.dKy);
+}
+
+} // namespace
+
+
+//- The checks, in the order of their errors, then the conversion
+template<class Real>
+Params<Real> makeParams(const ModelInput& in)
+{
+    requireFiniteInput(in);
+    checkModel(in);
+    const double deltaDeg = checkedBasalFrictionAngle(in);
+    checkNumericsAndMaps(in);
 
     const double phi = in.phiDeg*degToRad;
     const double delta = deltaDeg*degToRad;
@@ -393,22 +451,7 @@ Params<Real> makeParams(const ModelInput& in)
     p.lambda = Real(in.lambda);
     p.tanPhi = Real(std::tan(phi));
 
-    const EarthPressureCoeffs<double> K =
-        in.earthPressure == EarthPressureModel::activePassive
-      ? activePassiveCoeffs<double>(phi, delta)
-      : isotropicCoeffs<double>();
-    for (int a = 0; a < 2; ++a)
-    {
-        p.K.kx[a] = Real(K.kx[a]);
-        for (int b = 0; b < 2; ++b)
-        {
-            p.K.ky[a][b] = Real(K.ky[a][b]);
-        }
-    }
-    p.K.kxMax = Real(K.kxMax);
-    p.K.kyMax = Real(K.kyMax);
-    p.K.dKx = Real(K.dKx);
-    p.K.dKy = Real(K.dKy);
+    setEarthPressure(in, phi, delta, p.K);
 
     p.friction = FrictionParams<Real>();
     p.friction.law = in.frictionLaw;
