@@ -48,6 +48,16 @@
 #         and zb = 0, the tilted plane its zb (1e-9), 0/h that of the
 #         north-up DEM (1e-9); hazardMaps writes .tif alone, with the DEM's
 #         geotransform, each pixel the hMax of the cell under its centre;
+#       - the plan mode (no axis): grid size and origin on a north-up DEM
+#         (whole, cells below the pixel size: the edge lines without values
+#         left out, an extent inside and one clipped) and on a rotated one
+#         (x along its columns); zb the plane at the cell centres (1e-9);
+#         the square's volume area on the slope x h (normal) and plan area
+#         x d (vertical, h = d cos(theta) on the tilted plane, 1e-9);
+#         coordinates plan in transportProperties, inclination removed;
+#         refused as above: no cellSize, extent outside the DEM, halfWidth
+#         or profileSmoothing without axis, extent with axis, nodata under
+#         the grid, a release outside it;
 #       - bad release rasters (not a raster, unknown format, missing,
 #         negative or NaN thickness, none > 0, off the mesh, beside a
 #         polygon or a thickness), a shapefile and a raster in a system no
@@ -811,5 +821,202 @@ expectRefusal "shapefile no transformation reaches" "local.shp" - \
 expectRefusal "release raster no transformation reaches" "local.tif" - \
     "cp ../utm-dictionary/system/terrainDict system/ && sed -i 's#polygon ((600040.*#raster \"constant/local.tif\";#; /thickness   2;/d' system/terrainDict"
 expectRefusal "DEM of pixels without area" "'dem'" 's#constant/plane.asc#constant/degenerate.tif#'
+
+# -- 8. The plan mode: no axis, the DEM's own plan grid ---------------------------
+#- writePlanDict <case> [<dem>] [<thicknessDirection>] [<extra entries>]: a
+#  terrainDict without axis, cellSize 5, release r1 the square X in [1040,
+#  1100], Y in [5040, 5100] (3600 m^2 in plan) of thickness 2
+writePlanDict()
+{
+    cat > "$1/system/terrainDict" <<EOD
+FoamFile { version 2.0; format ascii; class dictionary; object terrainDict; }
+dem             "${2:-constant/plane.asc}";
+cellSize        5;
+${4:-}
+release
+{
+    r1
+    {
+        polygon     ((1040 5040) (1100 5040) (1100 5100) (1040 5100));
+        thickness   2;
+        thicknessDirection ${3:-normal};
+    }
+}
+EOD
+}
+
+#- planCase <name> <writePlanDict's arguments but the case> [<edit>]: a copy
+#  of base with that terrainDict through terrainToCase; sets c
+planCase()
+{
+    local name="$1"
+    shift
+    c="$work/$name"
+    newCase "$name" > /dev/null
+    (cd "$c" && writePlanDict . "$@" && runApplication terrainToCase > /dev/null) \
+        && return 0
+    fail "$name: terrainToCase failed (see $c/log.terrainToCase)"
+    return 1
+}
+
+#- planCheck <case> <what> <python: sets ok and msg>: over nx, ny (the
+#  blockMeshDict's), cs, origin, xAxis, yAxis (terrainMapping's), the
+#  fields zb and h, X(c), Y(c) (world centre of cell c), volume (the log's
+#  released volume), tp (transportProperties' text), log
+planCheck()
+{
+    local msg
+    if msg="$($python - "$1" "$3" 2>&1 <<'PYEOF'
+import math, re, sys
+case, code = sys.argv[1], sys.argv[2]
+def field(name):
+    t = open(f"{case}/0/{name}").read()
+    m = re.search(r"internalField\s+nonuniform\s+List<scalar>\s*(\d+)\s*\(([^)]*)\)", t)
+    return [float(v) for v in m.group(2).split()]
+def entry(text, key):
+    return re.search(r"^%s\s+([^;]*);" % key, text, re.M).group(1)
+def vec(text, key):
+    return [float(v) for v in entry(text, key).strip("()").split()]
+bm = open(f"{case}/system/blockMeshDict").read()
+nx, ny = int(entry(bm, "nx")), int(entry(bm, "ny"))
+tm = open(f"{case}/constant/terrainMapping").read()
+cs = float(entry(tm, "cellSize"))
+origin, xAxis, yAxis = vec(tm, "origin"), vec(tm, "xAxis"), vec(tm, "yAxis")
+zb, h = field("zb"), field("h")
+def X(c):
+    x, y = (c % nx + 0.5)*cs, (c // nx + 0.5)*cs
+    return origin[0] + x*xAxis[0] + y*yAxis[0]
+def Y(c):
+    x, y = (c % nx + 0.5)*cs, (c // nx + 0.5)*cs
+    return origin[1] + x*xAxis[1] + y*yAxis[1]
+log = open(f"{case}/log.terrainToCase").read()
+volume = float(re.search(r"^Released volume (\S+) m\^3", log, re.M).group(1))
+tp = open(f"{case}/constant/transportProperties").read()
+a35, a10 = math.tan(math.radians(35)), math.tan(math.radians(10))
+ok, msg = False, "no result"
+exec(code)
+print(msg)
+sys.exit(0 if ok else 1)
+PYEOF
+)"
+    then
+        pass "plan mode, $2: $msg"
+    else
+        fail "plan mode, $2: $msg"
+    fi
+}
+
+# North-up plane, the DEM's whole extent: 48 x 32 cells of 5 m from the
+# DEM's lower-left corner; zb the plane at the cell centres; the square's
+# volume 2 x 3600 / cos 35 (normal thickness: area on the slope x h)
+if planCase plan-plane constant/plane.asc
+then
+    planCheck "$c" "north-up plane DEM" '
+e = max(abs(zb[k] - (2000 - a35*(X(k) - 1000))) for k in range(len(zb)))
+want = 2*3600/math.cos(math.radians(35))
+ok = (nx, ny) == (48, 32) and origin == [1000, 5000] and xAxis == [1, 0] \
+    and yAxis == [0, 1] and len(zb) == nx*ny and e < 1e-9 \
+    and abs(volume - want) < 1e-6*want and abs(max(h) - 2) < 1e-12
+msg = "%d x %d cells, origin %s, xAxis %s, yAxis %s, max |zb - plane| = %.3g m, volume %.10g m^3 (2 x 3600/cos35 = %.10g), max h %.17g" % (nx, ny, origin, xAxis, yAxis, e, volume, want, max(h))'
+    planCheck "$c" "transportProperties" '
+ok = re.search(r"^coordinates\s+plan;", tp, re.M) is not None \
+    and re.search(r"^\s*inclination", tp, re.M) is None \
+    and re.search(r"^g\s+9.81;", tp, re.M) is not None \
+    and "inclination" in log and "removed" in log
+msg = "coordinates plan, no inclination (removed, the log says so), g kept"'
+fi
+
+# A cell size below the pixel's: the edge lines of cells whose centres lie
+# in the band half a pixel wide along the outline are left out (160 x 106
+# cells of 1.5 m, less the first and last column and the first row)
+c="$work/plan-fine"
+newCase plan-fine > /dev/null
+if (cd "$c" && writePlanDict . && sed -i 's/^cellSize .*/cellSize 1.5;/' system/terrainDict \
+    && runApplication terrainToCase > /dev/null)
+then
+    planCheck "$c" "cells of 1.5 m on 2 m pixels" '
+ok = (nx, ny) == (158, 105) and abs(origin[0] - 1001.5) < 1e-9 and abs(origin[1] - 5001.5) < 1e-9 \
+    and max(abs(zb[k] - (2000 - a35*(X(k) - 1000))) for k in range(len(zb))) < 1e-9
+msg = "%d x %d cells, origin %s" % (nx, ny, origin)'
+else
+    fail "plan mode, cells of 1.5 m: terrainToCase failed (see $c/log.terrainToCase)"
+fi
+
+# extent: within the DEM, and reaching beyond it (clipped)
+if planCase plan-extent constant/plane.asc normal "extent ((1020 5010) (1180 5150));"
+then
+    planCheck "$c" "extent ((1020 5010) (1180 5150))" '
+ok = (nx, ny) == (32, 28) and origin == [1020, 5010]
+msg = "%d x %d cells, origin %s" % (nx, ny, origin)'
+fi
+if planCase plan-clipped constant/plane.asc normal "extent ((900 5010) (1100 5300));"
+then
+    planCheck "$c" "extent ((900 5010) (1100 5300)) clipped to the DEM" '
+ok = (nx, ny) == (20, 30) and origin == [1000, 5010] and "clipped" in log
+msg = "%d x %d cells, origin %s, clipped in the log" % (nx, ny, origin)'
+fi
+
+# Vertical thickness on the plane tilted both ways: h = 2 cos(theta),
+# cos(theta) = 1/sqrt(1 + tan^2 35 + tan^2 10), volume 2 x 3600 (vertical
+# column)
+if planCase plan-vertical constant/tilted.asc vertical
+then
+    planCheck "$c" "vertical thickness on a tilted plane" '
+ct = 1/math.sqrt(1 + a35**2 + a10**2)
+full = [v for v in h if v > 0 and abs(v - 2*ct) < 1e-6]
+e = max(abs(v - 2*ct) for v in full)
+ez = max(abs(zb[k] - (2000 - a35*(X(k) - 1000) + a10*(Y(k) - 5080))) for k in range(len(zb)))
+ok = len(full) == 144 and e < 1e-9 and abs(volume - 7200) < 1e-6*7200 and ez < 1e-9
+msg = "%d full cells with h = 2 cos(theta) within %.3g m, volume %.10g m^3 (7200), max |zb - plane| %.3g m" % (len(full), e, volume, ez)'
+fi
+
+# A DEM on a grid rotated by 30 deg: x along its columns; 52 x 52 cells,
+# origin the outline corner (927, 5128) - 260 yAxis; zb the plane; the
+# square's volume as on the north-up DEM
+if planCase plan-rotated constant/rplane.tif
+then
+    planCheck "$c" "plane DEM on a grid rotated by 30 deg" '
+t = math.radians(30)
+o = [927 + 260*math.sin(t), 5128 - 260*math.cos(t)]
+e = max(abs(zb[k] - (2000 - a35*(X(k) - 1000))) for k in range(len(zb)))
+want = 2*3600/math.cos(math.radians(35))
+ok = (nx, ny) == (52, 52) and max(abs(origin[i] - o[i]) for i in (0, 1)) < 1e-9 \
+    and abs(xAxis[0] - math.cos(t)) < 1e-15 and abs(xAxis[1] - math.sin(t)) < 1e-15 \
+    and abs(yAxis[0] + math.sin(t)) < 1e-15 and abs(yAxis[1] - math.cos(t)) < 1e-15 \
+    and e < 1e-9 and abs(volume - want) < 1e-6*want
+msg = "%d x %d cells, origin %s (%s), xAxis %s, max |zb - plane| = %.3g m, volume %.10g m^3 (%.10g)" % (nx, ny, origin, o, xAxis, e, volume, want)'
+fi
+
+# A release raster (the thickness ramp on its own 3 m pixels), vertical:
+# its volume that of the pixels (sum d A: the plan frame maps it exactly)
+c="$work/plan-raster"
+newCase plan-raster > /dev/null
+if (cd "$c" && writePlanDict . constant/plane.asc vertical \
+    && sed -i 's#polygon .*#raster "constant/rel.asc";#; /thickness   2;/d' system/terrainDict \
+    && runApplication terrainToCase > /dev/null)
+then
+    planCheck "$c" "release raster, vertical thickness" '
+want = float(open(case + "/constant/rel.volume").read())
+ok = abs(volume - want) < 1e-6*want
+msg = "volume %.10g m^3, the pixels %.10g" % (volume, want)'
+else
+    fail "plan mode, release raster: terrainToCase failed (see $c/log.terrainToCase)"
+fi
+
+# Refused, nothing written
+expectRefusal "plan mode, missing cellSize" "'cellSize'" - \
+    "writePlanDict . && sed -i '/^cellSize/d' system/terrainDict"
+expectRefusal "plan mode, extent outside the DEM" "'extent'" - \
+    "writePlanDict . constant/plane.asc normal 'extent ((0 0) (100 100));'"
+expectRefusal "plan mode, halfWidth without axis" "'halfWidth'" - \
+    "writePlanDict . constant/plane.asc normal 'halfWidth 40;'" "belongs to the axis mode"
+expectRefusal "plan mode, profileSmoothing without axis" "'profileSmoothing'" - \
+    "writePlanDict . constant/plane.asc normal 'profileSmoothing 20;'" "belongs to the axis mode"
+expectRefusal "axis mode, extent with axis" "'extent'" \
+    's#^cellSize.*#cellSize 5; extent ((1000 5000) (1100 5100));#' "" "belongs to the plan mode"
+expectRefusal "plan mode, nodata under the grid" "'dem'" - \
+    "writePlanDict . constant/hole.asc" "cell centres of the plan grid lie next to nodata"
+expectRefusal "plan mode, release outside the grid" "'polygon'" - \
+    "writePlanDict . constant/plane.asc normal 'extent ((1000 5000) (1080 5160));'" "outside the plan grid"
 
 finish

@@ -13,6 +13,8 @@
 #     tutorial with an Allrun-parallel is also run decomposed, shortened
 #     (2 processes), and fails unless its fields are the serial run's
 #     (log.compareDecomposed); without mpirun that run is skipped.
+#     A tutorial holding a file notTested is skipped (its first line says
+#     why) unless named on the command line.
 #     Prints one line per run and "N passed, M failed, K skipped".
 #
 # Usage
@@ -29,6 +31,8 @@ if [ ${#tutorials[@]} -eq 0 ]
 then
     for d in "$project"/tutorials/*/Allrun
     do
+        # A tutorial with a file notTested waits for what it needs
+        [ -e "$(dirname "$d")/notTested" ] && continue
         tutorials+=("$(basename "$(dirname "$d")")")
     done
 fi
@@ -36,6 +40,12 @@ fi
 passed=0
 failed=0
 skipped=0
+for d in "$project"/tutorials/*/notTested
+do
+    [ -e "$d" ] || continue
+    echo "SKIP  $(basename "$(dirname "$d")") (notTested: $(head -n1 "$d"))"
+    skipped=$((skipped + 1))
+done
 
 #- verdict <run> <what it did> <its log>: PASS, or FAIL with $problems and
 #  the log's end; counted

@@ -104,4 +104,73 @@ void writeCaseFiles
         << "Next: blockMesh, then savageHutterFoam" << nl << nl;
 }
 
+void writePlanCaseFiles
+(
+    const Time& runTime, const IOdictionary& dict, const terrainDem& dem,
+    const planGrid& grid, const planBed& bed, const releasedLayer& layer
+)
+{
+    const fileName tpFile = runTime.path()/"constant"/"transportProperties";
+    if (!isFile(tpFile))
+    {
+        FatalIOErrorInFunction(dict)
+            << "constant/transportProperties not found: terrainToCase sets"
+            << " its 'coordinates' entry to plan and keeps the rest (g,"
+            << " phi, frictionModel, ...), which must be there" << nl
+            << exit(FatalIOError);
+    }
+    bool hadInclination = false;
+    const std::string tpText = terrainFiles::setPlanCoordinates
+    (
+        terrainFiles::readText(tpFile), hadInclination
+    );
+
+    terrainFiles::writePlanBlockMeshDict
+    (
+        runTime.path()/"system"/"blockMeshDict",
+        grid.nx, grid.ny, grid.xMax(), grid.yMax()
+    );
+    terrainFiles::writeText(tpFile, tpText);
+    if (hadInclination)
+    {
+        Info<< "constant/transportProperties: its 'inclination' entry"
+            << " removed (the plan mode has none: the bed zb is the DEM's"
+            << " elevation)" << nl;
+    }
+    mkDir(runTime.path()/"0");
+    terrainFiles::writePlanField
+    (
+        runTime.path()/"0"/"zb", "volScalarField", "zb", "[0 1 0 0 0 0 0]",
+        bed.zb
+    );
+    terrainFiles::writePlanField
+    (
+        runTime.path()/"0"/"h", "volScalarField", "h", "[0 1 0 0 0 0 0]",
+        layer.h
+    );
+    terrainFiles::writePlanField
+    (
+        runTime.path()/"0"/"U", "volVectorField", "U", "[0 1 -1 0 0 0 0]",
+        std::vector<double>(), "(0 0 0)"
+    );
+    terrainFiles::planMapping m;
+    m.dem = dem.name;
+    m.origin = grid.origin;
+    m.xAxis = grid.xAxis;
+    m.yAxis = grid.yAxis;
+    m.cellSize = grid.cellSize;
+    m.nx = grid.nx;
+    m.ny = grid.ny;
+    m.releasedVolume = layer.volume;
+    terrainFiles::writePlanMapping
+    (
+        runTime.path()/"constant"/"terrainMapping", m
+    );
+
+    Info<< "Wrote system/blockMeshDict, constant/transportProperties"
+        << " (coordinates plan), 0/zb, 0/h, 0/U, constant/terrainMapping"
+        << " (mode plan)" << nl
+        << "Next: blockMesh, then savageHutterFoam" << nl << nl;
+}
+
 } // End namespace Foam

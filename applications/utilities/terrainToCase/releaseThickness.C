@@ -293,7 +293,9 @@ scalarField releaseMapper::rasterThickness
 }
 
 
-//- The log's lines for release r of the given volume
+} // End anonymous namespace
+
+
 void reportRelease
 (
     const release& r, const terrain::rasterRelease& mapped, scalar volume
@@ -328,8 +330,6 @@ void reportRelease
         << (r.vertical ? "vertical" : "normal") << ", volume "
         << volume << " m^3" << nl;
 }
-
-} // End anonymous namespace
 
 
 releasedLayer releaseThickness

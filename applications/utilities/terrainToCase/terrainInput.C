@@ -11,7 +11,8 @@ namespace Foam
 
 const wordList terrainKeywords
 ({
-    "dem", "axis", "halfWidth", "cellSize", "profileSmoothing", "release"
+    "dem", "axis", "halfWidth", "cellSize", "profileSmoothing", "extent",
+    "release"
 });
 
 const wordList releaseKeywords
@@ -72,6 +73,14 @@ fileName caseFile(const Time& runTime, const dictionary& d, const word& key)
 
 chuteAxis readAxis(const dictionary& dict)
 {
+    if (dict.found("extent"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "keyword 'extent' belongs to the plan mode (a terrainDict"
+            << " without 'axis'): with 'axis' the mesh spans the axis and"
+            << " +-halfWidth.  Remove 'extent' or 'axis'" << nl
+            << exit(FatalIOError);
+    }
     chuteAxis a;
     a.points = dict.get<List<vector2D>>("axis");
     if (a.points.size() != 2)

@@ -83,6 +83,33 @@ Description
     written.  A release raster reaching beyond the mesh is a warning with
     the volume left out.
 
+    Without axis (the plan mode, docs/design.md section 5b,
+    docs/terrainMapping.md): the case on the DEM's own plan grid,
+
+        dem             "constant/dem.tif";
+        cellSize        10;                   // [m] square plan cells
+        extent          ((X0 Y0) (X1 Y1));    // optional; default the DEM's
+        release         { ... as above ... }
+
+    x along the DEM's columns, y to the left of x (a north-up DEM: x east,
+    y north), from the grid's lower-left corner; extent, a rectangle on the
+    DEM's axes, is clipped to the DEM's outline (one wholly outside it is
+    an error), the rows and columns along the edges whose cell centres lie
+    where the DEM has no values (half a pixel along its outline) are left
+    out, and nodata under a cell centre is an error with the count of such
+    cells (an extent can leave them out).  halfWidth and profileSmoothing
+    belong to the axis mode: an error without axis (as extent is with
+    it).  Writes system/blockMeshDict (nx x ny cells, patches xMin, xMax,
+    yMin, yMax open: zeroGradient h and U), 0/zb the DEM's elevation at
+    the cell centres (bilinear), 0/h the releases' thickness normal to the
+    bed (a vertical thickness d becomes d cos(theta), cos(theta) =
+    1/sqrt(1 + |grad zb|^2) of zb's centred differences), 0/U zero,
+    coordinates plan in constant/transportProperties (its inclination
+    entry removed, the rest kept) and constant/terrainMapping with mode
+    plan and the affine map X = origin + x xAxis + y yAxis.  The log:
+    the grid, its extent, zb's and the slope's range, the released volume
+    sum h J A (J = 1/cos(theta)).  planGrid and planRelease are its stages.
+
     Stage by stage, each in its own file: terrainInput (terrainDict's
     keywords, the axis and the mesh's size), terrainDem (the DEM),
     thalwegProfile (the profile along the axis, the inclination table and
@@ -104,6 +131,7 @@ Usage
 #include "releaseInput.H"
 #include "releaseThickness.H"
 #include "caseFiles.H"
+#include "planRelease.H"
 
 using namespace Foam;
 
@@ -133,6 +161,21 @@ int main(int argc, char *argv[])
 
     // Each stage checks what it reads: nothing is written before the last
     const terrainDem dem = readDem(runTime, dict);
+    if (!dict.found("axis"))
+    {
+        // The plan mode: the DEM's own plan grid
+        const planGrid grid = readPlanGrid(dict, dem);
+        const planBed bed = bedOnPlan(dict, dem, grid);
+        const std::vector<release> releases =
+            readReleases(runTime, dict, dem);
+        const releasedLayer layer =
+            planReleaseThickness(releases, dem, grid, bed);
+
+        writePlanCaseFiles(runTime, dict, dem, grid, bed, layer);
+
+        Info<< "End\n" << endl;
+        return 0;
+    }
     const chuteAxis axis = readAxis(dict);
     const thalwegProfile profile = readProfile(dict, dem, axis);
     const chuteGrid grid = gridOnProfile(dict, axis, profile);
