@@ -117,33 +117,10 @@ scalarField rasterThickness
     (
         {O[0], O[1], 0}, g.xAxis[0], g.xAxis[1], {0, g.xMax()}, {0, 0}
     );
-    try
-    {
-        mapped = terrain::mapRasterRelease
-        (
-            r.raster, *r.rasterToDem, dem.raster, flat,
-            {g.nx, g.ny, g.cellSize, yHalf}
-        );
-    }
-    catch (const terrain::gdalError& err)
-    {
-        FatalIOErrorInFunction(*r.dict)
-            << "keyword 'raster' of release " << r.name << ": "
-            << err.what() << nl << exit(FatalIOError);
-    }
-    if (!mapped.nPixels)
-    {
-        FatalIOErrorInFunction(*r.dict)
-            << "keyword 'raster' of release " << r.name << ": "
-            << r.rasterFile << " holds no thickness > 0" << nl
-            << exit(FatalIOError);
-    }
-    scalarField d(g.nCells(), Zero);
-    forAll(d, c)
-    {
-        d[c] = mapped.h[c];
-    }
-    return d;
+    return rasterReleaseThickness
+    (
+        r, dem.raster, flat, {g.nx, g.ny, g.cellSize, yHalf}, mapped
+    );
 }
 
 } // End anonymous namespace

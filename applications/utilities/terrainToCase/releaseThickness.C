@@ -263,12 +263,29 @@ scalarField releaseMapper::rasterThickness
     const release& r, terrain::rasterRelease& mapped
 ) const
 {
+    return rasterReleaseThickness
+    (
+        r, dem_.raster, surface_, {g_.nx, g_.ny, g_.cellSize, g_.yMax},
+        mapped
+    );
+}
+
+
+} // End anonymous namespace
+
+
+scalarField rasterReleaseThickness
+(
+    const release& r, const terrain::Raster& dem,
+    const terrain::referenceSurface& surface, const terrain::meshGrid& grid,
+    terrain::rasterRelease& mapped
+)
+{
     try
     {
         mapped = terrain::mapRasterRelease
         (
-            r.raster, *r.rasterToDem, dem_.raster, surface_,
-            {g_.nx, g_.ny, g_.cellSize, g_.yMax}
+            r.raster, *r.rasterToDem, dem, surface, grid
         );
     }
     catch (const terrain::gdalError& err)
@@ -284,16 +301,13 @@ scalarField releaseMapper::rasterThickness
             << r.rasterFile << " holds no thickness > 0" << nl
             << exit(FatalIOError);
     }
-    scalarField d(g_.nCells(), Zero);
+    scalarField d(label(grid.nx*grid.ny), Zero);
     forAll(d, c)
     {
         d[c] = mapped.h[c];
     }
     return d;
 }
-
-
-} // End anonymous namespace
 
 
 void reportRelease
