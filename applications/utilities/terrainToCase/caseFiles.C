@@ -14,17 +14,17 @@ namespace
 {
 
 //- The text of constant/transportProperties; FatalIOError when it is not
-//  there
+//  there (terrainToCase sets its entry `sets` and keeps the rest)
 std::string transportPropertiesText
 (
-    const fileName& tpFile, const dictionary& dict
+    const fileName& tpFile, const dictionary& dict, const char* sets
 )
 {
     if (!isFile(tpFile))
     {
         FatalIOErrorInFunction(dict)
             << "constant/transportProperties not found: terrainToCase sets"
-            << " its 'inclination' entry and keeps the rest (g, phi,"
+            << " its " << sets << " and keeps the rest (g, phi,"
             << " frictionModel, ...), which must be there" << nl
             << exit(FatalIOError);
     }
@@ -67,7 +67,8 @@ void writeCaseFiles
 )
 {
     const fileName tpFile = runTime.path()/"constant"/"transportProperties";
-    const std::string tpText = transportPropertiesText(tpFile, dict);
+    const std::string tpText =
+        transportPropertiesText(tpFile, dict, "'inclination' entry");
 
     terrainFiles::writeBlockMeshDict
     (
@@ -111,18 +112,11 @@ void writePlanCaseFiles
 )
 {
     const fileName tpFile = runTime.path()/"constant"/"transportProperties";
-    if (!isFile(tpFile))
-    {
-        FatalIOErrorInFunction(dict)
-            << "constant/transportProperties not found: terrainToCase sets"
-            << " its 'coordinates' entry to plan and keeps the rest (g,"
-            << " phi, frictionModel, ...), which must be there" << nl
-            << exit(FatalIOError);
-    }
     bool hadInclination = false;
     const std::string tpText = terrainFiles::setPlanCoordinates
     (
-        terrainFiles::readText(tpFile), hadInclination
+        transportPropertiesText(tpFile, dict, "'coordinates' entry to plan"),
+        hadInclination
     );
 
     terrainFiles::writePlanBlockMeshDict
