@@ -155,13 +155,8 @@ bedSlope steepestCell(const scalarField& zb, const chuteGrid& g, scalar steep)
         for (label i = 0; i < nx; ++i)
         {
             const label c = i + nx*j;
-            const label im = max(i - 1, label(0)), ip = min(i + 1, nx - 1);
-            const label jm = max(j - 1, label(0)), jp = min(j + 1, ny - 1);
-            const scalar gx = ip > im
-              ? (zb[ip + nx*j] - zb[im + nx*j])/((ip - im)*cellSize) : 0;
-            const scalar gy = jp > jm
-              ? (zb[i + nx*jp] - zb[i + nx*jm])/((jp - jm)*cellSize) : 0;
-            const scalar grad = std::sqrt(gx*gx + gy*gy);
+            const vector2D G = zbGradient(zb, nx, ny, cellSize, i, j);
+            const scalar grad = std::sqrt(G.x()*G.x() + G.y()*G.y());
             s.nSteep += (grad > steep);
             if (grad > s.gradMax)
             {

@@ -4,6 +4,7 @@
 
 #include "planGrid.H"
 #include "terrainInput.H"
+#include "bedElevation.H"
 #include "vector2D.H"
 #include "unitConversion.H"
 
@@ -276,13 +277,8 @@ planBed bedOnPlan
     {
         for (label i = 0; i < nx; ++i)
         {
-            const label im = max(i - 1, label(0)), ip = min(i + 1, nx - 1);
-            const label jm = max(j - 1, label(0)), jp = min(j + 1, ny - 1);
-            const scalar p = ip > im
-              ? (zb[ip + nx*j] - zb[im + nx*j])/((ip - im)*g.cellSize) : 0;
-            const scalar q = jp > jm
-              ? (zb[i + nx*jp] - zb[i + nx*jm])/((jp - jm)*g.cellSize) : 0;
-            const scalar grad2 = p*p + q*q;
+            const vector2D G = zbGradient(zb, nx, ny, g.cellSize, i, j);
+            const scalar grad2 = G.x()*G.x() + G.y()*G.y();
             bed.cosTheta[i + nx*j] = 1/std::sqrt(1 + grad2);
             gMin = min(gMin, std::sqrt(grad2));
             gMax = max(gMax, std::sqrt(grad2));
