@@ -50,107 +50,122 @@ struct frameBox
     }
 };
 
-} // End anonymous namespace
 
-
-planGrid readPlanGrid(const dictionary& dict, const terrainDem& d)
+//- The plan grid's axes: x along the DEM's columns, y to its left
+//  (+90 deg); the DEM's origin point(0, 0) is the frame's (u, v) = (0, 0)
+struct demFrame
 {
-    noAxisKeywords(dict);
-    const terrain::Raster& dem = d.raster;
-    if (!dict.found("cellSize"))
+    std::array<double, 2> P0, xAxis, yAxis;
+
+    explicit demFrame(const terrain::Raster& dem)
     {
-        FatalIOErrorInFunction(dict)
-            << "keyword 'cellSize' missing: without 'axis' (the plan mode)"
-            << " the case's square cells [m] on the DEM's plan grid are"
-            << " needed" << nl << exit(FatalIOError);
+        const double len = std::hypot(dem.gt[1], dem.gt[4]);
+        xAxis = {dem.gt[1]/len, dem.gt[4]/len};
+        yAxis = {-xAxis[1] + 0.0, xAxis[0]};
+        P0 = dem.point(0, 0);
     }
-    planGrid g;
-    g.cellSize = readPositive(dict, "cellSize");
-    const scalar cs = g.cellSize;
 
-    // x along the DEM's columns, y to its left (+90 deg)
-    const double len = std::hypot(dem.gt[1], dem.gt[4]);
-    g.xAxis = {dem.gt[1]/len, dem.gt[4]/len};
-    g.yAxis = {-g.xAxis[1] + 0.0, g.xAxis[0]};
-
-    const std::array<double, 2> P0 = dem.point(0, 0);
-    const auto frame = [&](double X, double Y)
+    std::array<double, 2> frame(double X, double Y) const
     {
         const double dX = X - P0[0], dY = Y - P0[1];
-        return std::array<double, 2>
+        return {dX*xAxis[0] + dY*xAxis[1], dX*yAxis[0] + dY*yAxis[1]};
+    }
+
+    std::array<double, 2> world(double u, double v) const
+    {
+        return
         {
-            dX*g.xAxis[0] + dY*g.xAxis[1], dX*g.yAxis[0] + dY*g.yAxis[1]
+            P0[0] + u*xAxis[0] + v*yAxis[0], P0[1] + u*xAxis[1] + v*yAxis[1]
         };
-    };
+    }
+};
+
+
+//- The DEM's outline on the frame's axes, clipped to the optional
+//  'extent' (a message where it clips; FatalIOError where 'extent' is
+//  not two finite corners or lies outside the DEM)
+frameBox gridBox
+(
+    const dictionary& dict, const terrainDem& d, const demFrame& f
+)
+{
+    const terrain::Raster& dem = d.raster;
     frameBox demBox;
     const int corners[4][2] = {{0, 0}, {1, 0}, {0, 1}, {1, 1}};
     for (const auto& c : corners)
     {
         const std::array<double, 2> P = dem.point(c[0]*dem.nx, c[1]*dem.ny);
-        const std::array<double, 2> uv = frame(P[0], P[1]);
+        const std::array<double, 2> uv = f.frame(P[0], P[1]);
         demBox.add(uv[0], uv[1]);
     }
 
     frameBox box = demBox;
-    if (dict.found("extent"))
+    if (!dict.found("extent"))
     {
-        const List<vector2D> pts = dict.get<List<vector2D>>("extent");
-        if (pts.size() != 2)
-        {
-            FatalIOErrorInFunction(dict)
-                << "keyword 'extent': two corners ((X0 Y0) (X1 Y1)) of the"
-                << " plan rectangle expected; got " << pts.size() << nl
-                << exit(FatalIOError);
-        }
-        frameBox given;
-        for (const vector2D& p : pts)
-        {
-            if (!(std::isfinite(p.x()) && std::isfinite(p.y())))
-            {
-                FatalIOErrorInFunction(dict)
-                    << "keyword 'extent': corner " << p << " not finite"
-                    << nl << exit(FatalIOError);
-            }
-            const std::array<double, 2> uv = frame(p.x(), p.y());
-            given.add(uv[0], uv[1]);
-        }
-        box.u0 = std::max(given.u0, demBox.u0);
-        box.u1 = std::min(given.u1, demBox.u1);
-        box.v0 = std::max(given.v0, demBox.v0);
-        box.v1 = std::min(given.v1, demBox.v1);
-        const std::array<double, 4> outline = dem.bounds();
-        if (!(box.u1 > box.u0 && box.v1 > box.v0))
-        {
-            FatalIOErrorInFunction(dict)
-                << "keyword 'extent': the rectangle " << pts << " lies"
-                << " outside the DEM " << d.file << " (its outline: X in ["
-                << outline[0] << ", " << outline[1] << "], Y in ["
-                << outline[2] << ", " << outline[3] << "]"
-                << (dem.northUp() ? "" : ", a rotated grid's bounding box")
-                << ")" << nl << exit(FatalIOError);
-        }
-        if
-        (
-            box.u0 > given.u0 || box.u1 < given.u1
-         || box.v0 > given.v0 || box.v1 < given.v1
-        )
-        {
-            Info<< "extent " << pts << " clipped to the DEM's outline" << nl;
-        }
+        return box;
     }
+    const List<vector2D> pts = dict.get<List<vector2D>>("extent");
+    if (pts.size() != 2)
+    {
+        FatalIOErrorInFunction(dict)
+            << "keyword 'extent': two corners ((X0 Y0) (X1 Y1)) of the"
+            << " plan rectangle expected; got " << pts.size() << nl
+            << exit(FatalIOError);
+    }
+    frameBox given;
+    for (const vector2D& p : pts)
+    {
+        if (!(std::isfinite(p.x()) && std::isfinite(p.y())))
+        {
+            FatalIOErrorInFunction(dict)
+                << "keyword 'extent': corner " << p << " not finite"
+                << nl << exit(FatalIOError);
+        }
+        const std::array<double, 2> uv = f.frame(p.x(), p.y());
+        given.add(uv[0], uv[1]);
+    }
+    box.u0 = std::max(given.u0, demBox.u0);
+    box.u1 = std::min(given.u1, demBox.u1);
+    box.v0 = std::max(given.v0, demBox.v0);
+    box.v1 = std::min(given.v1, demBox.v1);
+    const std::array<double, 4> outline = dem.bounds();
+    if (!(box.u1 > box.u0 && box.v1 > box.v0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "keyword 'extent': the rectangle " << pts << " lies"
+            << " outside the DEM " << d.file << " (its outline: X in ["
+            << outline[0] << ", " << outline[1] << "], Y in ["
+            << outline[2] << ", " << outline[3] << "]"
+            << (dem.northUp() ? "" : ", a rotated grid's bounding box")
+            << ")" << nl << exit(FatalIOError);
+    }
+    if
+    (
+        box.u0 > given.u0 || box.u1 < given.u1
+     || box.v0 > given.v0 || box.v1 < given.v1
+    )
+    {
+        Info<< "extent " << pts << " clipped to the DEM's outline" << nl;
+    }
+    return box;
+}
 
-    // Cells from the lower-left corner; the edge lines of cells whose
-    // centre has no DEM value (half a pixel along the outline) left out
-    const label nx0 = label(std::floor((box.u1 - box.u0)/cs + 1e-9));
-    const label ny0 = label(std::floor((box.v1 - box.v0)/cs + 1e-9));
+
+//- The cells of size cs from the box's lower-left corner, the edge lines
+//  of cells whose centre has no DEM value (half a pixel along the
+//  outline) left out: the first and last column (i0, i1) and row (j0, j1)
+//  kept
+std::array<label, 4> trimmedCells
+(
+    const terrain::Raster& dem, const demFrame& f, const frameBox& box,
+    double cs, label nx0, label ny0
+)
+{
     const auto sampled = [&](label i, label j)
     {
         const double u = box.u0 + (i + 0.5)*cs, v = box.v0 + (j + 0.5)*cs;
-        return dem.sampled
-        (
-            P0[0] + u*g.xAxis[0] + v*g.yAxis[0],
-            P0[1] + u*g.xAxis[1] + v*g.yAxis[1]
-        );
+        const std::array<double, 2> W = f.world(u, v);
+        return dem.sampled(W[0], W[1]);
     };
     label i0 = 0, i1 = nx0 - 1, j0 = 0, j1 = ny0 - 1;
     for (bool trimmed = true; trimmed && i0 <= i1 && j0 <= j1; )
@@ -177,24 +192,18 @@ planGrid readPlanGrid(const dictionary& dict, const terrainDem& d)
         if (i0 <= i1 && !row(j0)) { ++j0; trimmed = true; }
         if (i0 <= i1 && j0 <= j1 && !row(j1)) { --j1; trimmed = true; }
     }
-    g.nx = i1 - i0 + 1;
-    g.ny = j1 - j0 + 1;
-    if (!(g.nx > 0 && g.ny > 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << "keyword 'cellSize' = " << cs << ": no cell of the plan"
-            << " grid has its centre where the DEM " << d.file << " has"
-            << " values " << (dict.found("extent") ? "within 'extent'" : "")
-            << " (" << (box.u1 - box.u0) << " x " << (box.v1 - box.v0)
-            << " m on the DEM's axes; " << d.valueExtent.c_str() << ")"
-            << nl << exit(FatalIOError);
-    }
-    const double u0 = box.u0 + i0*cs, v0 = box.v0 + j0*cs;
-    g.origin =
-    {
-        P0[0] + u0*g.xAxis[0] + v0*g.yAxis[0],
-        P0[1] + u0*g.xAxis[1] + v0*g.yAxis[1]
-    };
+    return {i0, i1, j0, j1};
+}
+
+
+//- The grid's size, axes, origin and world bounding box on Info; the
+//  edge lines left out of the nx0 x ny0 cells of the box
+void reportPlanGrid
+(
+    const planGrid& g, const terrain::Raster& dem, label nx0, label ny0
+)
+{
+    const scalar cs = g.cellSize;
 
     // The grid's world bounding box
     double X0 = GREAT, X1 = -GREAT, Y0 = GREAT, Y1 = -GREAT;
@@ -223,6 +232,50 @@ planGrid readPlanGrid(const dictionary& dict, const terrainDem& d)
             << " where the DEM has no values (half a pixel along its"
             << " outline)" << nl;
     }
+}
+
+} // End anonymous namespace
+
+
+planGrid readPlanGrid(const dictionary& dict, const terrainDem& d)
+{
+    noAxisKeywords(dict);
+    const terrain::Raster& dem = d.raster;
+    if (!dict.found("cellSize"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "keyword 'cellSize' missing: without 'axis' (the plan mode)"
+            << " the case's square cells [m] on the DEM's plan grid are"
+            << " needed" << nl << exit(FatalIOError);
+    }
+    planGrid g;
+    g.cellSize = readPositive(dict, "cellSize");
+    const scalar cs = g.cellSize;
+
+    const demFrame f(dem);
+    g.xAxis = f.xAxis;
+    g.yAxis = f.yAxis;
+    const frameBox box = gridBox(dict, d, f);
+
+    const label nx0 = label(std::floor((box.u1 - box.u0)/cs + 1e-9));
+    const label ny0 = label(std::floor((box.v1 - box.v0)/cs + 1e-9));
+    const std::array<label, 4> kept = trimmedCells(dem, f, box, cs, nx0, ny0);
+    const label i0 = kept[0], j0 = kept[2];
+    g.nx = kept[1] - i0 + 1;
+    g.ny = kept[3] - j0 + 1;
+    if (!(g.nx > 0 && g.ny > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "keyword 'cellSize' = " << cs << ": no cell of the plan"
+            << " grid has its centre where the DEM " << d.file << " has"
+            << " values " << (dict.found("extent") ? "within 'extent'" : "")
+            << " (" << (box.u1 - box.u0) << " x " << (box.v1 - box.v0)
+            << " m on the DEM's axes; " << d.valueExtent.c_str() << ")"
+            << nl << exit(FatalIOError);
+    }
+    const double u0 = box.u0 + i0*cs, v0 = box.v0 + j0*cs;
+    g.origin = f.world(u0, v0);
+    reportPlanGrid(g, dem, nx0, ny0);
     return g;
 }
 
