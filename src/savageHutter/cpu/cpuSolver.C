@@ -166,30 +166,15 @@ void CpuSolver<Real>::exchangeDrainFactors(Real dt)
 
 
 template<class Real>
-void CpuSolver<Real>::advanceStep(Real dt, double tNew)
+void CpuSolver<Real>::computeFluxes()
 {
     const Grid<Real>& g = model_.g;
     const Model<Real>& m = model_;
-    const Fields<Real> U = U_.view();
     const Fields<Real> Uh = Uh_.view();
-    const Fields<Real> Un = Unew_.view();
     const FaceFields<Real> Fx = Fx_.view();
     const FaceFields<Real> Fy = Fy_.view();
     const int nx = g.nx;
     const int ny = g.ny;
-
-    fillStateGhosts();
-
-    #pragma omp parallel for if(parallel_) schedule(static)
-    for (int j = 0; j < ny; ++j)
-    {
-        for (int i = 0; i < nx; ++i)
-        {
-            predictorCell(m, U, Uh, dt, i, j);
-        }
-    }
-
-    fillGhostCells(m, Uh, halo_);
 
     // Each x-face i+1/2 for i = -1..nx-1 of rows 0..ny-1, each y-face
     // j+1/2 for j = -1..ny-1 of columns 0..nx-1, from the reconstructions
@@ -238,6 +223,36 @@ void CpuSolver<Real>::advanceStep(Real dt, double tNew)
             std::swap(lo, hi);
         }
     }
+}
+
+
+template<class Real>
+void CpuSolver<Real>::advanceStep(Real dt, double tNew)
+{
+    const Grid<Real>& g = model_.g;
+    const Model<Real>& m = model_;
+    const Fields<Real> U = U_.view();
+    const Fields<Real> Uh = Uh_.view();
+    const Fields<Real> Un = Unew_.view();
+    const FaceFields<Real> Fx = Fx_.view();
+    const FaceFields<Real> Fy = Fy_.view();
+    const int nx = g.nx;
+    const int ny = g.ny;
+
+    fillStateGhosts();
+
+    #pragma omp parallel for if(parallel_) schedule(static)
+    for (int j = 0; j < ny; ++j)
+    {
+        for (int i = 0; i < nx; ++i)
+        {
+            predictorCell(m, U, Uh, dt, i, j);
+        }
+    }
+
+    fillGhostCells(m, Uh, halo_);
+
+    computeFluxes();
 
     if (halo_)
     {
