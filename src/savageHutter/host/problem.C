@@ -92,6 +92,67 @@ void allocateArrays(Problem<Real>& pb)
     pb.hv.assign(n, Real(0));
 }
 
+
+//- InputError where the jet's input is not finite and bounded, its radii
+//  not positive, its speed negative or its stagnation point outside the
+//  whole mesh [x0, x1] x [y0, y1]
+void checkJetInput
+(
+    const JetInput& in, double x0, double y0, double x1, double y1
+)
+{
+    const auto num = numberString;
+    // Beyond 1e30 the jet's state (R^2, R_imp^2, h u_jet) overflows, as
+    // every other input (modelInput.C)
+    const auto bounded = [&num](const char* keyword, double x)
+    {
+        if (!(std::fabs(x) <= 1e30))
+        {
+            throw InputError
+            (
+                keyword,
+                "must be a finite number of magnitude at most 1e30, got "
+              + num(x)
+            );
+        }
+    };
+    bounded("centre", in.xc);
+    bounded("centre", in.yc);
+    bounded("R", in.R);
+    bounded("R_imp", in.rImp);
+    bounded("u_jet", in.uJet);
+    if (!(in.R > 0 && std::isfinite(in.R)))
+    {
+        throw InputError("R", "jet radius must be positive, got " + num(in.R));
+    }
+    if (!(in.rImp > 0 && std::isfinite(in.rImp)))
+    {
+        throw InputError
+        (
+            "R_imp",
+            "radius of the imposed region must be positive, got "
+          + num(in.rImp)
+        );
+    }
+    if (!(in.uJet >= 0 && std::isfinite(in.uJet)))
+    {
+        throw InputError
+        (
+            "u_jet", "jet speed must not be negative, got " + num(in.uJet)
+        );
+    }
+    if (!(in.xc >= x0 && in.xc <= x1 && in.yc >= y0 && in.yc <= y1))
+    {
+        throw InputError
+        (
+            "centre",
+            "stagnation point (" + num(in.xc) + " " + num(in.yc)
+          + ") lies outside the mesh [" + num(x0) + ", " + num(x1) + "] x ["
+          + num(y0) + ", " + num(y1) + "]"
+        );
+    }
+}
+
 } // namespace
 
 template<class Real>
@@ -207,60 +268,12 @@ InputError Problem<Real>::noJetCells(const JetInput& in)
 template<class Real>
 int Problem<Real>::setImpingingJet(const JetInput& in)
 {
-    const auto num = numberString;
-    // Beyond 1e30 the jet's state (R^2, R_imp^2, h u_jet) overflows, as
-    // every other input (modelInput.C)
-    const auto bounded = [&num](const char* keyword, double x)
-    {
-        if (!(std::fabs(x) <= 1e30))
-        {
-            throw InputError
-            (
-                keyword,
-                "must be a finite number of magnitude at most 1e30, got "
-              + num(x)
-            );
-        }
-    };
-    bounded("centre", in.xc);
-    bounded("centre", in.yc);
-    bounded("R", in.R);
-    bounded("R_imp", in.rImp);
-    bounded("u_jet", in.uJet);
-    if (!(in.R > 0 && std::isfinite(in.R)))
-    {
-        throw InputError("R", "jet radius must be positive, got " + num(in.R));
-    }
-    if (!(in.rImp > 0 && std::isfinite(in.rImp)))
-    {
-        throw InputError
-        (
-            "R_imp",
-            "radius of the imposed region must be positive, got "
-          + num(in.rImp)
-        );
-    }
-    if (!(in.uJet >= 0 && std::isfinite(in.uJet)))
-    {
-        throw InputError
-        (
-            "u_jet", "jet speed must not be negative, got " + num(in.uJet)
-        );
-    }
     const double x0 = grid.x0;
     const double y0 = grid.y0;
     const double x1 = x0 + wholeNx*double(grid.dx);
     const double y1 = y0 + wholeNy*double(grid.dy);
-    if (!(in.xc >= x0 && in.xc <= x1 && in.yc >= y0 && in.yc <= y1))
-    {
-        throw InputError
-        (
-            "centre",
-            "stagnation point (" + num(in.xc) + " " + num(in.yc)
-          + ") lies outside the mesh [" + num(x0) + ", " + num(x1) + "] x ["
-          + num(y0) + ", " + num(y1) + "]"
-        );
-    }
+    checkJetInput(in, x0, y0, x1, y1);
+    const auto num = numberString;
 
     JetParams<Real> j;
     j.on = 1;
@@ -430,6 +443,14 @@ double Problem<Real>::volume() const
 template<class Real>
 HostGeometry<Real>::HostGeometry(const Problem<Real>& pb, Halo<Real>* halo)
 {
+    padColumns(pb, halo);
+    padBed(pb, halo);
+}
+
+
+template<class Real>
+void HostGeometry<Real>::padColumns(const Problem<Real>& pb, Halo<Real>* halo)
+{
     const Grid<Real>& g = pb.grid;
     const int ng = Grid<Real>::ng;
     const int nc = g.stride();
@@ -481,6 +502,19 @@ HostGeometry<Real>::HostGeometry(const Problem<Real>& pb, Halo<Real>* halo)
             }
         }
     }
+
+}
+
+
+template<class Real>
+void HostGeometry<Real>::padBed(const Problem<Real>& pb, Halo<Real>* halo)
+{
+    const Grid<Real>& g = pb.grid;
+    const int ng = Grid<Real>::ng;
+    const auto physical = [&pb](int side)
+    {
+        return pb.bc.type[side] != BCType::processor;
+    };
 
     // Topography on the padded grid.  Beyond a wall the ghost cells mirror
     // the interior (ghost -1 <- cell 0, ghost -2 <- cell 1), as the

@@ -84,11 +84,94 @@ std::string describe(int rank, const Subdomain& s)
       + std::to_string(s.i0) + ", " + std::to_string(s.j0) + "))";
 }
 
+//- What is wrong with the given side of rank r's subdomain among all
+//  ranks' (splitError), "" if nothing: its neighbour, or the lack of one,
+//  and how the two meet
+std::string sideError(const std::vector<Subdomain>& subs, int r, int side)
+{
+    const int size = int(subs.size());
+    const int ng = Grid<double>::ng;
+    const Subdomain& s = subs[r];
+    const int m = s.neighbour[side];
+    if (m >= size)
+    {
+        return describe(r, s) + "'s " + sideName(side)
+          + " neighbour is rank " + std::to_string(m)
+          + ", beyond the " + std::to_string(size)
+          + " ranks of the communicator";
+    }
+    // A side without a neighbour is a side of the whole grid, and
+    // a side of the whole grid has none (no periodic wrap)
+    const bool onEdge =
+        side == xMin ? s.i0 == 0
+      : side == xMax ? s.i0 + s.nx == s.nxWhole
+      : side == yMin ? s.j0 == 0
+      : s.j0 + s.ny == s.nyWhole;
+    if ((m < 0) != onEdge)
+    {
+        return describe(r, s) + "'s " + sideName(side) + " side "
+          + (onEdge
+            ? "is a side of the whole grid but names a neighbour"
+            : "lies inside the whole grid but names no neighbour");
+    }
+    if (m < 0)
+    {
+        return "";
+    }
+    const bool xSide = side == xMin || side == xMax;
+    const std::string here =
+        describe(r, s) + "'s " + sideName(side) + " neighbour";
+    if ((xSide ? s.nx : s.ny) < ng)
+    {
+        return describe(r, s) + " is narrower than the "
+          + std::to_string(ng) + " ghost layers across its "
+          + sideName(side) + " processor side";
+    }
+    const Subdomain& t = subs[m];
+    if (t.neighbour[opposite(side)] != r)
+    {
+        return here + " " + describe(m, t) + " names rank "
+          + std::to_string(t.neighbour[opposite(side)])
+          + " across its " + sideName(opposite(side)) + " side";
+    }
+    // The shared side: its length and where it starts along it
+    const int lengthHere = xSide ? s.ny : s.nx;
+    const int lengthThere = xSide ? t.ny : t.nx;
+    if (lengthHere != lengthThere)
+    {
+        return here + " " + describe(m, t) + " has "
+          + std::to_string(lengthThere)
+          + (xSide ? " rows" : " columns")
+          + " along the shared side, rank " + std::to_string(r)
+          + " has " + std::to_string(lengthHere);
+    }
+    if ((xSide ? s.j0 : s.i0) != (xSide ? t.j0 : t.i0))
+    {
+        return here + " " + describe(m, t)
+          + " does not start the shared side at the same "
+          + (xSide ? "row" : "column");
+    }
+    // Adjoining (across the whole grid's side where it wraps)
+    const int lo = xSide ? s.i0 : s.j0;
+    const int hi = lo + (xSide ? s.nx : s.ny);
+    const int tLo = xSide ? t.i0 : t.j0;
+    const int tHi = tLo + (xSide ? t.nx : t.ny);
+    const bool adjoins = (side == xMin || side == yMin)
+        ? tHi == lo
+        : hi == tLo;
+    if (!adjoins)
+    {
+        return here + " " + describe(m, t)
+          + " does not adjoin it across that side";
+    }
+    return "";
+}
+
+
 //- What is wrong with the split of all ranks' subdomains, "" if nothing
 std::string splitError(const std::vector<Subdomain>& subs)
 {
     const int size = int(subs.size());
-    const int ng = Grid<double>::ng;
     const Subdomain& first = subs[0];
     if (first.nxWhole < 1 || first.nyWhole < 1)
     {
@@ -118,77 +201,10 @@ std::string splitError(const std::vector<Subdomain>& subs)
         }
         for (int side = 0; side < 4; ++side)
         {
-            const int m = s.neighbour[side];
-            if (m >= size)
+            const std::string error = sideError(subs, r, side);
+            if (!error.empty())
             {
-                return describe(r, s) + "'s " + sideName(side)
-                  + " neighbour is rank " + std::to_string(m)
-                  + ", beyond the " + std::to_string(size)
-                  + " ranks of the communicator";
-            }
-            // A side without a neighbour is a side of the whole grid, and
-            // a side of the whole grid has none (no periodic wrap)
-            const bool onEdge =
-                side == xMin ? s.i0 == 0
-              : side == xMax ? s.i0 + s.nx == s.nxWhole
-              : side == yMin ? s.j0 == 0
-              : s.j0 + s.ny == s.nyWhole;
-            if ((m < 0) != onEdge)
-            {
-                return describe(r, s) + "'s " + sideName(side) + " side "
-                  + (onEdge
-                    ? "is a side of the whole grid but names a neighbour"
-                    : "lies inside the whole grid but names no neighbour");
-            }
-            if (m < 0)
-            {
-                continue;
-            }
-            const bool xSide = side == xMin || side == xMax;
-            const std::string here =
-                describe(r, s) + "'s " + sideName(side) + " neighbour";
-            if ((xSide ? s.nx : s.ny) < ng)
-            {
-                return describe(r, s) + " is narrower than the "
-                  + std::to_string(ng) + " ghost layers across its "
-                  + sideName(side) + " processor side";
-            }
-            const Subdomain& t = subs[m];
-            if (t.neighbour[opposite(side)] != r)
-            {
-                return here + " " + describe(m, t) + " names rank "
-                  + std::to_string(t.neighbour[opposite(side)])
-                  + " across its " + sideName(opposite(side)) + " side";
-            }
-            // The shared side: its length and where it starts along it
-            const int lengthHere = xSide ? s.ny : s.nx;
-            const int lengthThere = xSide ? t.ny : t.nx;
-            if (lengthHere != lengthThere)
-            {
-                return here + " " + describe(m, t) + " has "
-                  + std::to_string(lengthThere)
-                  + (xSide ? " rows" : " columns")
-                  + " along the shared side, rank " + std::to_string(r)
-                  + " has " + std::to_string(lengthHere);
-            }
-            if ((xSide ? s.j0 : s.i0) != (xSide ? t.j0 : t.i0))
-            {
-                return here + " " + describe(m, t)
-                  + " does not start the shared side at the same "
-                  + (xSide ? "row" : "column");
-            }
-            // Adjoining (across the whole grid's side where it wraps)
-            const int lo = xSide ? s.i0 : s.j0;
-            const int hi = lo + (xSide ? s.nx : s.ny);
-            const int tLo = xSide ? t.i0 : t.j0;
-            const int tHi = tLo + (xSide ? t.nx : t.ny);
-            const bool adjoins = (side == xMin || side == yMin)
-                ? tHi == lo
-                : hi == tLo;
-            if (!adjoins)
-            {
-                return here + " " + describe(m, t)
-                  + " does not adjoin it across that side";
+                return error;
             }
         }
     }
@@ -417,16 +433,9 @@ void MpiHalo<Real>::exchange(int dir, Real* const* arrays, int n, int width)
 
 
 template<class Real>
-void MpiHalo<Real>::exchangePacked
-(
-    const Strips& strips,
-    int n,
-    Real* const send[2],
-    Real* const recv[2]
-)
+int MpiHalo<Real>::messageCount(const Strips& strips, int n) const
 {
     const int dir = strips.dir;
-    const int first = 2*dir;            // xMin or yMin
     if (dir != 0 && dir != 1)
     {
         throw std::invalid_argument
@@ -455,7 +464,85 @@ void MpiHalo<Real>::exchangePacked
           + " values is beyond MPI's int count"
         );
     }
-    const int count = int(total);
+    return int(total);
+}
+
+
+template<class Real>
+void MpiHalo<Real>::waitAll
+(
+    int nReq,
+    MPI_Request* requests,
+    MPI_Status* statuses,
+    int nRecv,
+    const int* sides
+) const
+{
+    const int code = MPI_Waitall(nReq, requests, statuses);
+    if (code != MPI_SUCCESS)
+    {
+        if (code == MPI_ERR_IN_STATUS)
+        {
+            for (int r = 0; r < nReq; ++r)
+            {
+                const int e = statuses[r].MPI_ERROR;
+                if (e != MPI_SUCCESS && e != MPI_ERR_PENDING)
+                {
+                    throw std::runtime_error
+                    (
+                        std::string("MpiHalo: MPI_Waitall failed on the ")
+                      + (r < nRecv ? "receive from" : "send to") + " rank "
+                      + std::to_string(sub_.neighbour[sides[r]]) + " across "
+                      + sideName(sides[r]) + ": " + mpiErrorString(e)
+                    );
+                }
+            }
+        }
+        check(code, "MPI_Waitall");
+    }
+}
+
+
+template<class Real>
+void MpiHalo<Real>::checkCounts
+(
+    MPI_Status* statuses,
+    int nRecv,
+    const int* sides,
+    int count,
+    MPI_Datatype type
+) const
+{
+    for (int r = 0; r < nRecv; ++r)
+    {
+        const int side = sides[r];
+        int got = 0;
+        check(MPI_Get_count(&statuses[r], type, &got), "MPI_Get_count");
+        if (got != count)
+        {
+            throw std::runtime_error
+            (
+                "MpiHalo::exchange: " + std::to_string(got)
+              + " values from rank " + std::to_string(sub_.neighbour[side])
+              + " across " + sideName(side) + ", expected "
+              + std::to_string(count)
+            );
+        }
+    }
+}
+
+
+template<class Real>
+void MpiHalo<Real>::exchangePacked
+(
+    const Strips& strips,
+    int n,
+    Real* const send[2],
+    Real* const recv[2]
+)
+{
+    const int first = 2*strips.dir;     // xMin or yMin
+    const int count = messageCount(strips, n);
     if
     (
         count == 0
@@ -533,45 +620,8 @@ void MpiHalo<Real>::exchangePacked
     }
 
     MPI_Status statuses[4];
-    const int code = MPI_Waitall(nReq, requests, statuses);
-    if (code != MPI_SUCCESS)
-    {
-        if (code == MPI_ERR_IN_STATUS)
-        {
-            for (int r = 0; r < nReq; ++r)
-            {
-                const int e = statuses[r].MPI_ERROR;
-                if (e != MPI_SUCCESS && e != MPI_ERR_PENDING)
-                {
-                    throw std::runtime_error
-                    (
-                        std::string("MpiHalo: MPI_Waitall failed on the ")
-                      + (r < nRecv ? "receive from" : "send to") + " rank "
-                      + std::to_string(sub_.neighbour[sides[r]]) + " across "
-                      + sideName(sides[r]) + ": " + mpiErrorString(e)
-                    );
-                }
-            }
-        }
-        check(code, "MPI_Waitall");
-    }
-
-    for (int r = 0; r < nRecv; ++r)
-    {
-        const int side = sides[r];
-        int got = 0;
-        check(MPI_Get_count(&statuses[r], type, &got), "MPI_Get_count");
-        if (got != count)
-        {
-            throw std::runtime_error
-            (
-                "MpiHalo::exchange: " + std::to_string(got)
-              + " values from rank " + std::to_string(sub_.neighbour[side])
-              + " across " + sideName(side) + ", expected "
-              + std::to_string(count)
-            );
-        }
-    }
+    waitAll(nReq, requests, statuses, nRecv, sides);
+    checkCounts(statuses, nRecv, sides, count, type);
 }
 
 
