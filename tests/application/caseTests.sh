@@ -666,15 +666,9 @@ leftover=false
 [ -d "$d/.savageHutterFoam-writing" ] && leftover=true
 setEntry "$d/system/controlDict" writeControl adjustableRunTime
 setEntry "$d/system/controlDict" writeInterval 0.05
-last=$(timeDirs "$d" | sort -g | tail -n1)
-setEntry "$d/system/controlDict" endTime "$(python3 -c "print(round($last + 0.01, 6))")"
-(cd "$d" && savageHutterFoam -backend cpu > log.restart 2>&1)
-rc=$?
-warned=true
-if $leftover && ! grep -q "Removing .*savageHutterFoam-writing" "$d/log.restart"
-then
-    warned=false
-fi
+restartFromLast "$d" 0.01 $leftover
+rc=$restartRc
+warned=$restartWarned
 if [ "$kills" -eq 5 ] && [ "$nDirs" -gt 5 ] && [ -z "$incomplete" ] \
 && [ $rc -eq 0 ] && $warned && [ ! -d "$d/.savageHutterFoam-writing" ]
 then

@@ -273,15 +273,9 @@ else
 fi
 # The next start clears what was being written and runs on
 last=$(timeDirs "$d" | tail -n1)
-setEntry "$d/system/controlDict" startFrom latestTime
-setEntry "$d/system/controlDict" endTime "$(python3 -c "print(round($last + 0.005, 6))")"
-(cd "$d" && savageHutterFoam -backend cpu > log.restart 2>&1)
-rc=$?
-warned=true
-if $leftover && ! grep -q "Removing .*savageHutterFoam-writing" "$d/log.restart"
-then
-    warned=false
-fi
+restartFromLast "$d" 0.005 $leftover
+rc=$restartRc
+warned=$restartWarned
 if [ $rc -eq 0 ] && $warned && [ ! -d "$staging" ] && [ -z "$(incomplete "$d")" ] \
 && grep -q "^Create mesh for time = $last\$" "$d/log.restart"
 then

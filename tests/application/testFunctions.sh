@@ -101,6 +101,25 @@ complete()
     done
 }
 
+# Run case $1 on the CPU from its last time directory to that time + $2
+# (log.restart); restartRc: its exit status; restartWarned: false where $3
+# is true (a kill left a staging directory) and the log does not say it
+# was removed
+restartFromLast()
+{
+    local last
+    last=$(timeDirs "$1" | tail -n1)
+    setEntry "$1/system/controlDict" startFrom latestTime
+    setEntry "$1/system/controlDict" endTime "$(python3 -c "print(round($last + $2, 6))")"
+    (cd "$1" && savageHutterFoam -backend cpu > log.restart 2>&1)
+    restartRc=$?
+    restartWarned=true
+    if $3 && ! grep -q "Removing .*savageHutterFoam-writing" "$1/log.restart"
+    then
+        restartWarned=false
+    fi
+}
+
 waitFor()
 {
     local i
