@@ -85,6 +85,9 @@ bool sameRun(EnsembleSolver<Real>& e, int m, Solver<Real>& s)
     return shtest::compareMember(e, m, s).empty();
 }
 
+//- A benchmark's one pass in order (cases, batched run, sampled members one
+//  by one, exactness, table row): kept in one piece so the timed sections
+//  stand next to what they time.
 template<class Real>
 int run(const Options& o)
 {

@@ -207,6 +207,9 @@ std::string meshName(int k, int nx, int ny, bool wet)
     return os.str();
 }
 
+//- Kept in one piece: the timed runs of one mesh on each backend with the
+//  wall-budget handling between them; split, the timers and partial-run
+//  state would pass between helpers.
 template<class Real>
 void runMesh(const Options& o, int k, bool large, bool wet, double tLarge)
 {
@@ -317,6 +320,8 @@ void runMesh(const Options& o, int k, bool large, bool wet, double tLarge)
     }
 }
 
+//- Kept in one piece: the whole markdown table, one column after another in
+//  print order.
 std::string table()
 {
     std::ostringstream os;
@@ -460,6 +465,8 @@ int profile(int k, bool wet)
 } // namespace
 
 
+//- Kept in one piece: the option parsing and the benchmark's sequence as a
+//  reader follows it.
 int main(int argc, char** argv)
 {
     Options o;

@@ -62,6 +62,8 @@ std::unique_ptr<Solver<float>> singleRun(const Problem<float>& pb)
     return makeCudaSolver(pb);
 }
 
+//- Kept in one piece: one test scenario read top to bottom (members,
+//  batched and single runs, comparison, table, assertions).
 template<class Real>
 void exactness(Counter& t, int k, int nMembers, int chunk, unsigned seed)
 {

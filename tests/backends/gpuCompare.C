@@ -176,6 +176,9 @@ Difference difference(const State& a, const State& b)
 //  the bound of the header (with a third run, the CPU from h + 1 ulp), and
 //  cpuDouble the double CPU states at the output times (for e_fd).  Returns the CPU states at the output times and leaves the
 //  GPU's final state in gpuFinal.
+//  Kept in one piece: the lock-step of the two (three) runs over the output
+//  times and the comparison at each share the solvers and the running error
+//  tables.
 template<class Real>
 std::vector<State> compareRun
 (

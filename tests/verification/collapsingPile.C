@@ -27,6 +27,8 @@ using namespace shtest;
 namespace
 {
 
+//- Kept in one piece: one verification scenario read top to bottom (set-up,
+//  run, table, assertions).
 void run(Counter& test, int n)
 {
     ModelInput in;

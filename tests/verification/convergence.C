@@ -267,6 +267,8 @@ const char* limiterLabel(Limiter l)
     return l == ModelInput().limiter ? " (default)" : "";
 }
 
+//- Kept in one piece: the tables of the cap, printed and asserted in the
+//  order they appear.
 void capTables(Counter& test)
 {
     const double g = 9.81, zeta = 35*deg, tEnd = 1, xMin = -6, xMax = 14;
@@ -372,6 +374,8 @@ void capTables(Counter& test)
 //- Section 5.1 from t0 (0: the Riemann data) to 0.5 s.  minOrder: the
 //  order asserted on the finest pair, of h over the line and the smooth
 //  part (t0 = 0) or of h and hu over the smooth part (t0 > 0)
+//  Kept in one piece: the tables of the dam break, printed and asserted in
+//  the order they appear.
 void damBreakTables(Counter& test, double t0, double minOrder)
 {
     const double h0 = 10, zeta = 40*deg, delta = 24.5*deg, g = 9.81, tEnd = 0.5;

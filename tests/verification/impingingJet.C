@@ -42,6 +42,8 @@ State<double> analytic(const Problem<double>& pb, int i, int j, bool& inside)
     return {h, h*uJet*cosTheta, h*uJet*sinTheta};
 }
 
+//- Kept in one piece: one verification scenario read top to bottom (set-up,
+//  run, table, assertions).
 void analyticRegion(Counter& t)
 {
     std::printf("\nThe analytic region inside R_imp = 2R\n");

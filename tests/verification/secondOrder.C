@@ -85,6 +85,8 @@ Block rk4(const std::function<Block(const Block&)>& f, Block y, double t, int n)
     return y;
 }
 
+//- Kept in one piece: one verification scenario read top to bottom (set-up,
+//  reference, runs, table, assertions).
 void frictionInTime(Counter& test)
 {
     const double g = 9.81, zeta = 35*deg, h = 1, u0 = 0, v0 = 10, tEnd = 1;

@@ -119,6 +119,8 @@ double chuteZeta(double x)
     return (x < 600 ? 31.0 : (x < 900 ? 31.0 - 26.0*(x - 600)/300 : 5.0))*deg;
 }
 
+//- Kept in one piece: one verification scenario read top to bottom (set-up,
+//  run, table, assertions).
 void chute(Counter& test, bool voellmy)
 {
     ModelInput in;
