@@ -90,12 +90,12 @@ PlanForce<double> rateAcceleration
     const PlanK<double>& K
 )
 {
-    const double trPiB =
-        pressureCurvature(m, planThickness(m, H), u, v, K, par.g*par.epsilon);
-    const PlanForce<double> D = planDriving(m, par.g, H, u, v, trPiB);
+    const PlanState<double> s{H, u, v};
+    const double trPiB = pressureCurvature(m, s, K, par.g*par.epsilon);
+    const PlanForce<double> D = planDriving(m, par.g, s, trPiB);
     const double speed = planSpeed(m, u, v);
     const double f =
-        planFrictionImpulse(par, m, H, u, v, 1.0)
+        planFrictionImpulse(par, m, s, 1.0)
       + m.J*dragCoefficient(par.friction)*speed*speed;
     return {(D.x - f*u/speed)/H, (D.y - f*v/speed)/H};
 }
@@ -112,6 +112,35 @@ double rel(double ax, double ay, double bx, double by)
     return std::hypot(ax - bx, ay - by)/std::hypot(bx, by);
 }
 
+//- The planes of a) and b): slope, direction of the descent in plan
+//  (cos, sin), Coulomb friction angle
+struct PlaneCase
+{
+    double thetaDeg, alphaDeg, deltaDeg;
+    double th, dc, ds;
+    PlanMetric<double> m;
+    Params<double> par;
+};
+
+std::vector<PlaneCase> planeCases()
+{
+    std::vector<PlaneCase> cases;
+    for (double thetaDeg : {20.0, 35.0, 40.0})
+    for (double alphaDeg : {0.0, 30.0, 90.0, 135.0})
+    for (double deltaDeg : {12.0, 38.0})
+    {
+        const double th = thetaDeg*deg;
+        const double dc = std::cos(alphaDeg*deg);
+        const double ds = std::sin(alphaDeg*deg);
+        cases.push_back
+        ({
+            thetaDeg, alphaDeg, deltaDeg, th, dc, ds, plane(th, dc, ds),
+            coulombParams(deltaDeg, 1)
+        });
+    }
+    return cases;
+}
+
 // * * * * * * * * * * * * * * * a) Tilted planes  * * * * * * * * * * * * //
 
 void tiltedPlanes(Counter& c)
@@ -122,17 +151,11 @@ void tiltedPlanes(Counter& c)
         "  theta  dir  delta  exact a [m/s^2]  rel err rate  rel err step\n"
     );
     double worst = 0;
-    for (double thetaDeg : {20.0, 35.0, 40.0})
-    for (double alphaDeg : {0.0, 30.0, 90.0, 135.0})
-    for (double deltaDeg : {12.0, 38.0})
+    for (const PlaneCase& k : planeCases())
     {
-        const double th = thetaDeg*deg;
-        const double dc = std::cos(alphaDeg*deg);
-        const double ds = std::sin(alphaDeg*deg);
-        const PlanMetric<double> m = plane(th, dc, ds);
-        const Params<double> par = coulombParams(deltaDeg, 1);
-        const double mu = std::tan(deltaDeg*deg);
-        const double H = planVolume(m, 1.5);
+        const double th = k.th, dc = k.dc, ds = k.ds;
+        const double mu = std::tan(k.deltaDeg*deg);
+        const double H = planVolume(k.m, 1.5);
         const double s = 4;
         const double u = s*std::cos(th)*dc;
         const double v = s*std::cos(th)*ds;
@@ -141,22 +164,19 @@ void tiltedPlanes(Counter& c)
         const double ey = A*std::cos(th)*ds;
 
         const PlanK<double> K{1, 1};
-        const PlanForce<double> a = rateAcceleration(par, m, H, u, v, K);
+        const PlanForce<double> a = rateAcceleration(k.par, k.m, H, u, v, K);
         const double eRate = rel(a.x, a.y, ex, ey);
 
         const double dt = 0.1;
-        double Mx = H*u;
-        double My = H*v;
-        planSourceStep
-        (
-            par, m, H, u, v, 0.0, H*u, H*v, u, v, H, dt, Mx, My
-        );
+        const State<double> q0{H, H*u, H*v};
+        State<double> r = q0;
+        planSourceStep(k.par, k.m, {H, u, v}, 0.0, q0, dt, r);
         const double eStep =
-            rel((Mx - H*u)/(dt*H), (My - H*v)/(dt*H), ex, ey);
+            rel((r.hu - H*u)/(dt*H), (r.hv - H*v)/(dt*H), ex, ey);
         std::printf
         (
             "  %5.1f  %3.0f  %5.1f  %15.10f  %12.2e  %12.2e\n",
-            thetaDeg, alphaDeg, deltaDeg, A, eRate, eStep
+            k.thetaDeg, k.alphaDeg, k.deltaDeg, A, eRate, eStep
         );
         worst = std::max(worst, std::max(eRate, eStep));
     }
@@ -213,15 +233,9 @@ void slopeCoordinates(Counter& c)
         "  theta  dir  delta  slope a_x, a_y [m/s^2]      rel diff\n"
     );
     double worst = 0;
-    for (double thetaDeg : {20.0, 35.0, 40.0})
-    for (double alphaDeg : {0.0, 30.0, 90.0, 135.0})
-    for (double deltaDeg : {12.0, 38.0})
+    for (const PlaneCase& k : planeCases())
     {
-        const double th = thetaDeg*deg;
-        const double dc = std::cos(alphaDeg*deg);
-        const double ds = std::sin(alphaDeg*deg);
-        const PlanMetric<double> m = plane(th, dc, ds);
-        const Params<double> par = coulombParams(deltaDeg, 1);
+        const double th = k.th, dc = k.dc, ds = k.ds;
         const double h = 1.5;
         const double us = 4;
         const double vs = 1.5;
@@ -229,15 +243,15 @@ void slopeCoordinates(Counter& c)
         const double u = us*std::cos(th)*dc - vs*ds;
         const double v = us*std::cos(th)*ds + vs*dc;
         const PlanForce<double> a =
-            rateAcceleration(par, m, planVolume(m, h), u, v, {1, 1});
+            rateAcceleration(k.par, k.m, planVolume(k.m, h), u, v, {1, 1});
         const double ax = (a.x*dc + a.y*ds)/std::cos(th);
         const double ay = -a.x*ds + a.y*dc;
-        const Acceleration<double> s = slopeAcceleration(par, th, h, us, vs);
+        const Acceleration<double> s = slopeAcceleration(k.par, th, h, us, vs);
         const double e = rel(ax, ay, s.x, s.y);
         std::printf
         (
             "  %5.1f  %3.0f  %5.1f  %12.8f %12.8f  %10.2e\n",
-            thetaDeg, alphaDeg, deltaDeg, s.x, s.y, e
+            k.thetaDeg, k.alphaDeg, k.deltaDeg, s.x, s.y, e
         );
         worst = std::max(worst, e);
     }
@@ -260,8 +274,8 @@ void slopeCoordinates(Counter& c)
             const double v = k.vs;
             const double H = planVolume(m, h);
             const PlanK<double> K{k.Ka, k.Kc};
-            const State<double> fx = planFluxX(m, H, u, v, K, g);
-            const State<double> fy = planFluxY(m, H, u, v, K, g);
+            const State<double> fx = planFlux(m, {H, u, v}, K, g, false);
+            const State<double> fy = planFlux(m, {H, u, v}, K, g, true);
             const State<double> sx = physicalFlux<double>({h, us, k.vs}, g*cz*k.Ka);
             const State<double> sy = physicalFlux<double>({h, k.vs, us}, g*cz*k.Kc);
             const double ex = relState(fx, {sx.h, cz*sx.hu, sx.hv});
@@ -311,20 +325,21 @@ Result evaluate(const Params<double>& par, const Sample& s)
 {
     const PlanMetric<double> m = planMetric(s.p, s.q, s.bxx, s.bxy, s.byy);
     const double eg = par.epsilon*par.g;
+    const PlanState<double> st{s.H, s.u, s.v};
+    const PlanState<double> sh{s.Hh, s.uh, s.vh};
     Result r;
-    r.fx = planFluxX(m, s.H, s.u, s.v, s.K, eg);
-    r.fy = planFluxY(m, s.H, s.u, s.v, s.K, eg);
-    r.trPiB = pressureCurvature(m, planThickness(m, s.H), s.u, s.v, s.K, eg);
-    r.D = planDriving(m, par.g, s.H, s.u, s.v, r.trPiB);
-    const double trH =
-        pressureCurvature(m, planThickness(m, s.Hh), s.uh, s.vh, s.K, eg);
-    r.sx = s.Mx;
-    r.sy = s.My;
+    r.fx = planFlux(m, st, s.K, eg, false);
+    r.fy = planFlux(m, st, s.K, eg, true);
+    r.trPiB = pressureCurvature(m, st, s.K, eg);
+    r.D = planDriving(m, par.g, st, r.trPiB);
+    State<double> q{s.HEnd, s.Mx, s.My};
     planSourceStep
     (
-        par, m, s.Hh, s.uh, s.vh, trH, s.H0*s.u0, s.H0*s.v0, s.u0, s.v0,
-        s.HEnd, 0.05, r.sx, r.sy
+        par, m, sh, pressureCurvature(m, sh, s.K, eg),
+        {s.H0, s.H0*s.u0, s.H0*s.v0}, 0.05, q
     );
+    r.sx = q.hu;
+    r.sy = q.hv;
     r.rx = s.Mx;
     r.ry = s.My;
     planStaticStep(par, m, s.H, r.trPiB, 0.05, r.rx, r.ry);
@@ -437,11 +452,9 @@ void atRest(Counter& c)
         const double eps = 1e-16*H*g*dt;
         double rx = eps, ry = -eps;
         planStaticStep(par, m, H, 0.0, dt, rx, ry);
-        double sx = eps, sy = -eps;
-        planSourceStep
-        (
-            par, m, H, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, H, dt, sx, sy
-        );
+        State<double> q{H, eps, -eps};
+        planSourceStep(par, m, {H, 0.0, 0.0}, 0.0, {H, 0.0, 0.0}, dt, q);
+        const double sx = q.hu, sy = q.hv;
         std::printf
         (
             "  %5.1f  %4.0f  %11.3e %11.3e  %11.3e %11.3e\n",
@@ -487,18 +500,20 @@ void thinAndFast(Counter& c)
         const PlanK<double> K{2.5, 0.6};
         const double eg = g;
         const double h = planThickness(m, H);
-        const State<double> fx = planFluxX(m, H, u, v, K, eg);
-        const State<double> fy = planFluxY(m, H, u, v, K, eg);
+        const PlanState<double> st{H, u, v};
+        const State<double> fx = planFlux(m, st, K, eg, false);
+        const State<double> fy = planFlux(m, st, K, eg, true);
         const PlanPressure<double> P =
             planPressure(h, u, v, m.p, m.q, m.rJ2, K, eg);
-        const double tr = pressureCurvature(m, h, u, v, K, eg);
-        const PlanForce<double> D = planDriving(m, g, H, u, v, tr);
+        const double tr = pressureCurvature(m, st, K, eg);
+        const PlanForce<double> D = planDriving(m, g, st, tr);
         const double gn = planNormalLoad(laws[l], m, u, v);
         // The scheme solves momentum only above hDry (1e-6 m by default):
         // the drag's factor divides by the thickness at the end
         const double HEnd = l == 1 ? std::max(H, 1e-6) : H;
-        double Mx = H*u, My = H*v;
-        planSourceStep(laws[l], m, H, u, v, tr, H*u, H*v, u, v, HEnd, 0.05, Mx, My);
+        State<double> q{HEnd, H*u, H*v};
+        planSourceStep(laws[l], m, st, tr, {H, H*u, H*v}, 0.05, q);
+        const double Mx = q.hu, My = q.hv;
         double Rx = H*u, Ry = H*v;
         planStaticStep(laws[l], m, H, tr, 0.05, Rx, Ry);
         const bool ok =
@@ -568,12 +583,13 @@ void cylinder(Counter& c)
         if (psiDeg == 0.0 && lambda == 1.0)
         {
             // A particle down the circle: no pressure, no friction
-            const PlanForce<double> D = planDriving(m, g, 1.0, u, v, 0.0);
+            const PlanForce<double> D = planDriving(m, g, {1.0, u, v}, 0.0);
             const double ax = -side*g*sth*cth - s*s*sth/R;
             worstA = std::max(worstA, std::fabs(D.x - ax)/std::fabs(ax) + std::fabs(D.y));
             // The pressure's curvature term of a layer 2 m thick, K 1.3
             const double h = 2;
-            const double tr = pressureCurvature(m, h, u, v, {1.3, 1.3}, g);
+            const double tr =
+                pressureCurvature(m, {planVolume(m, h), u, v}, {1.3, 1.3}, g);
             const double exactP = side*g*1.3*h/(2*R);
             worstP = std::max(worstP, std::fabs(tr/planVolume(m, h) - exactP)/std::fabs(exactP));
         }
