@@ -40,6 +40,12 @@
      constraint kept also where the convex bed would have to pull,
      s^2/R > g cos(theta)); and the pressure's curvature term of a layer of
      thickness h is tr(Pi B)/H = eps g K h/(2R), isotropic K.
+  g) The stretching rates along and across the flow that the earth
+     pressure's switch reads (flowStretching): a flow down a plane (20 and
+     40 deg, turned by 0, 30, 135 deg) stretched at a = 0.3 1/s along the
+     slope and b = -0.2 1/s across it gives (a, b); flow at uniform speed
+     round a cylinder stretched b along its axis gives (0, b); to 1e-14
+     1/s; transposed and mirrored bit for bit on random inputs.
 \*---------------------------------------------------------------------------*/
 
 #include "testing.H"
@@ -599,6 +605,77 @@ void cylinder(Counter& c)
     c.check(worstP <= 1e-13, fmt("f) tr(Pi B)/H = eps g K h/(2R): worst %.2e <= 1e-13", worstP));
 }
 
+// * * * * * * * * * * * * * * g) Stretching  * * * * * * * * * * * * * * //
+
+void stretching(Counter& c)
+{
+    std::printf
+    (
+        "\ng) stretching along and across the flow (K's switch), exact a, b\n"
+        "  bed               along err   across err\n"
+    );
+    const double a = 0.3, bb = -0.2;
+    double worst = 0;
+    for (double thetaDeg : {20.0, 40.0})
+    for (double alphaDeg : {0.0, 30.0, 135.0})
+    {
+        // Slope speed U0 + a x_s along the descent d, b y across it
+        const double th = thetaDeg*deg;
+        const double dc = std::cos(alphaDeg*deg), ds = std::sin(alphaDeg*deg);
+        const PlanMetric<double> m = plane(th, dc, ds);
+        const VelocityGradient<double> L
+        {
+            a*dc*dc + bb*ds*ds, (a - bb)*dc*ds, (a - bb)*dc*ds,
+            a*ds*ds + bb*dc*dc
+        };
+        const double u0 = 5*std::cos(th);
+        const AlongAcross<double> st = flowStretching(m, u0*dc, u0*ds, L);
+        const double e = std::max(std::fabs(st.along - a), std::fabs(st.across - bb));
+        std::printf("  plane %4.1f %5.1f   %10.2e  %10.2e\n", thetaDeg, alphaDeg, st.along - a, st.across - bb);
+        worst = std::max(worst, e);
+    }
+    for (double X : {10.0, 40.0})
+    {
+        // Round a cylinder at uniform 3D speed s, stretched b along its axis
+        const double R = 50, s = 8;
+        const double r = std::sqrt(R*R - X*X);
+        const PlanMetric<double> m = planMetric(X/r, 0.0, R*R/(r*r*r), 0.0, 0.0);
+        const VelocityGradient<double> L{s*X/(R*r), 0, 0, bb};
+        const AlongAcross<double> st = flowStretching(m, -s*r/R, 0.0, L);
+        const double e = std::max(std::fabs(st.along), std::fabs(st.across - bb));
+        std::printf("  cylinder X %4.0f   %10.2e  %10.2e\n", X, st.along, st.across - bb);
+        worst = std::max(worst, e);
+    }
+    c.check(worst <= 1e-14, fmt("g) stretching rates along and across the flow: worst %.2e 1/s <= 1e-14", worst));
+
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> U(-1, 1);
+    int bad = 0;
+    for (int k = 0; k < 2000; ++k)
+    {
+        const double p = 2*U(rng), q = 2*U(rng);
+        const double bxx = 0.05*U(rng), bxy = 0.05*U(rng), byy = 0.05*U(rng);
+        const double u = 10*U(rng), v = 10*U(rng);
+        const VelocityGradient<double> L{U(rng), U(rng), U(rng), U(rng)};
+        const AlongAcross<double> s0 =
+            flowStretching(planMetric(p, q, bxx, bxy, byy), u, v, L);
+        const AlongAcross<double> sT = flowStretching
+        (
+            planMetric(q, p, byy, bxy, bxx), v, u, {L.yy, L.yx, L.xy, L.xx}
+        );
+        const AlongAcross<double> sM = flowStretching
+        (
+            planMetric(-p, q, bxx, -bxy, byy), -u, v, {L.xx, -L.xy, -L.yx, L.yy}
+        );
+        const bool ok =
+            same(s0.along, sT.along) && same(s0.across, sT.across)
+         && same(s0.along, sM.along) && same(s0.across, sM.across);
+        bad += ok ? 0 : 1;
+    }
+    std::printf("  2000 random states: %d not transposed or not mirrored bit for bit\n", bad);
+    c.check(bad == 0, "g) stretching rates transposed and mirrored bit for bit");
+}
+
 } // namespace
 
 int main()
@@ -611,5 +688,6 @@ int main()
     atRest(c);
     thinAndFast(c);
     cylinder(c);
+    stretching(c);
     return c.finish();
 }
