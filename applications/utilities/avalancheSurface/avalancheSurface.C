@@ -56,6 +56,7 @@ Usage
 
 #include "surfaceInput.H"
 #include "surfacePoints.H"
+#include "planSurface.H"
 #include "vtkPolyData.H"
 
 using namespace Foam;
@@ -76,10 +77,13 @@ int main(int argc, char *argv[])
 
     const structuredGrid grid = readGrid(mesh);
     const IOdictionary tp(transportPropertiesIO(runTime));
-    const terrain::referenceSurface surface = readSurface(runTime, grid, tp);
+    const surfaceGeometry geometry = readGeometry(runTime, grid, tp);
     const scalar rho = readDensity(tp);
     checkTimes(mesh, times.chosen);
-    const pointFrame frame = pointFrames(mesh, grid, surface);
+    const pointFrame frame =
+        geometry.plan
+      ? pointFrame()
+      : pointFrames(mesh, grid, geometry.surface);
 
     const fileName outDir = runTime.path()/"postProcessing"/"avalancheSurface";
     mkDir(outDir);
@@ -87,10 +91,21 @@ int main(int argc, char *argv[])
     for (const instant& t : times.chosen)
     {
         runTime.setTime(t, 0);
-        writeTime
-        (
-            outDir, mesh, grid, surface, frame, t.name(), firstTime, rho
-        );
+        if (geometry.plan)
+        {
+            writePlanTime
+            (
+                outDir, mesh, grid, geometry.grid, t.name(), firstTime, rho
+            );
+        }
+        else
+        {
+            writeTime
+            (
+                outDir, mesh, grid, geometry.surface, frame, t.name(),
+                firstTime, rho
+            );
+        }
     }
 
     writeSeries(outDir, "surface", times.numeric);

@@ -61,6 +61,7 @@ Usage
 #include "hazardInput.H"
 #include "hazardRasters.H"
 #include "runoutReport.H"
+#include "planReport.H"
 
 using namespace Foam;
 
@@ -85,11 +86,15 @@ int main(int argc, char *argv[])
     const densityInput density = readDensity(runTime);
     const volScalarField h0(fieldIO(mesh, times.first, "h"), mesh);
     checkTimes(mesh, times, h0, density, threshold, statistics);
+    if (mapping.plan && !statistics)
+    {
+        checkComPath(mesh, times);
+    }
     const labelList pixelCell = pixelCells(mesh, mapping);
 
     if (statistics)
     {
-        writeStatistics(args, mesh, mapping.dem, pixelCell, statsTime);
+        writeStatistics(args, mesh, mapping.mapGrid(), pixelCell, statsTime);
     }
     else
     {
@@ -100,8 +105,21 @@ int main(int argc, char *argv[])
             const hazardFields fields(mesh, now, times.first, density.rho);
             const fileName outDir =
                 runTime.path()/"postProcessing"/"hazardMaps"/now;
-            writeMaps(outDir, fields, mapping.dem, pixelCell, threshold);
-            writeReport(outDir, now, threshold, mapping, h0, fields);
+            writeMaps
+            (
+                outDir, fields, mapping.mapGrid(), pixelCell, threshold
+            );
+            if (mapping.plan)
+            {
+                writePlanReport
+                (
+                    outDir, ti, threshold, mapping, times, h0, fields
+                );
+            }
+            else
+            {
+                writeReport(outDir, now, threshold, mapping, h0, fields);
+            }
         }
     }
     Info<< "End\n" << endl;
