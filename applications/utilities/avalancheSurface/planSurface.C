@@ -22,7 +22,11 @@ void writePlanTime
     const volScalarField h(fieldIO(mesh, now, "h"), mesh);
     const volVectorField U(fieldIO(mesh, now, "U"), mesh);
     const pointBed offsets = bedOffsets(mesh, grid, now, firstTime);
-    const scalarField zb(offsets.zb.begin(), offsets.zb.end());
+    scalarField zb(label(offsets.zb.size()));
+    forAll(zb, p)
+    {
+        zb[p] = offsets.zb[p];
+    }
     const std::array<double, 2>& ax = plan.xAxis;
     const std::array<double, 2>& ay = plan.yAxis;
 

@@ -307,3 +307,5 @@ void writePlanReport
         << " m, drop " << dz << " m, travel angle " << comAngle << " deg"
         << nl << "    Wrote " << outDir << nl << endl;
 }
+
+} // End namespace Foam
