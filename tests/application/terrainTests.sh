@@ -1132,6 +1132,7 @@ synth()
 import math, sys
 from synth import *
 load(sys.argv[1])
+from synth import *   # (the names load set)
 a35 = math.tan(math.radians(35))
 ok, msg = False, "no result"
 exec(sys.argv[2])
@@ -1193,6 +1194,7 @@ then
 import sys
 from synth import *
 load(sys.argv[1])
+from synth import *   # (the names load set)
 path = {0: {(4, 4): 2}, 1: {(19, 4): 1, (21, 4): 1}, 2: {(20, 20): 2}, 3: {(36, 20): 2}}
 for t, d in path.items():
     write(str(t), "h", cells(d))
@@ -1263,10 +1265,10 @@ msg = "comPathLength %.15g m (150), comTravelAngle %.15g deg (atan(1/3) = %.15g)
     mkdir -p "$work/haz-comfile/postProcessing"
     printf '0 10 10 1990\n1 110 10\n' > "$work/haz-comfile/postProcessing/centreOfMass.dat"
     toolRefusal "$work/haz-comfile" "hazardMaps, a line of centreOfMass.dat without z" \
-        "centreOfMass.dat line 2" "hazardMaps"
+        "centreOfMass.dat.* line 2: .*is not .time x y z." "hazardMaps"
     rm -rf "$work/haz-comfile/postProcessing" "$work/haz-comfile/2/h"
     toolRefusal "$work/haz-comfile" "hazardMaps, a time directory without h on the path" \
-        "No field h in .*/2: the centre of mass' path" "hazardMaps"
+        "No field h in .*/2.: the centre of mass' path" "hazardMaps"
 fi
 
 # 9b. On the quadratic bed (J varies from cell to cell): the release of
@@ -1282,6 +1284,7 @@ then
 import sys
 from synth import *
 load(sys.argv[1])
+from synth import *   # (the names load set)
 h0 = readField("0", "h")
 h1 = [0.0 if XY(c)[0] > 1080 else h0[c] for c in range(nx*ny)]
 write("1", "h", h1)
@@ -1333,6 +1336,8 @@ msg = "%d points (%d wet): max |bed - (X, Y, zb)| %.3g m, max |surface - (bed + 
     sed -i 's/^mode .*/mode            polar;/' "$c/constant/terrainMapping"
     toolRefusal "$c" "hazardMaps, terrainMapping of mode polar" \
         "keyword 'mode' = polar" "hazardMaps"
+    grep -q "terrainMapping" "$c/log.refusal" \
+        || fail "hazardMaps, mode polar: terrainMapping not named"
     toolRefusal "$c" "avalancheSurface, terrainMapping of mode polar" \
         "keyword 'mode' = polar" "avalancheSurface"
     grep -q "terrainMapping" "$c/log.refusal" \
@@ -1340,7 +1345,9 @@ msg = "%d points (%d wet): max |bed - (X, Y, zb)| %.3g m, max |surface - (bed + 
     cp "$c/constant/terrainMapping.good" "$c/constant/terrainMapping"
     sed -i '/^coordinates/d' "$c/constant/transportProperties"
     toolRefusal "$c" "hazardMaps, a plan mapping without coordinates plan" \
-        "transportProperties.*keyword 'coordinates'\|keyword 'coordinates'" "hazardMaps"
+        "keyword 'coordinates'" "hazardMaps"
+    grep -q "transportProperties" "$c/log.refusal" \
+        || fail "hazardMaps, no coordinates plan: transportProperties not named"
     toolRefusal "$c" "avalancheSurface, a plan mapping without coordinates plan" \
         "keyword 'coordinates'" "avalancheSurface"
     grep -q "transportProperties" "$c/log.refusal" \
@@ -1356,6 +1363,7 @@ then
 import sys
 from synth import *
 load(sys.argv[1])
+from synth import *   # (the names load set)
 write("1", "h", [1.0]*(nx*ny))
 write("1", "hMax", [1.0]*(nx*ny))
 write("1", "UMax", [1.0]*(nx*ny))
