@@ -63,6 +63,24 @@
 #         polygon or a thickness), a shapefile and a raster in a system no
 #         transformation reaches, a DEM whose pixels have no area: refused
 #         as above.
+#       - hazardMaps and avalancheSurface in the plan mode, on time
+#         directories written here (the solver's plan mode is not there
+#         yet): a known centre-of-mass path on the plane (3 legs of 80 m:
+#         comPathLength 240 m, comTravelAngle atan(2/3 tan 35), 1e-9) and
+#         one read from postProcessing/centreOfMass.dat (an L of 100 + 50 m
+#         dropping 50 m, a line after the report's time left out); the
+#         runout cell horizontally furthest from the release (not the
+#         lowest; a further cell below the threshold left out) and its
+#         travel angle; the rasters on the plan grid (size, georeference,
+#         cell values, nodata); on a quadratic bed, outflowVolume and
+#         depositVolume as sums of J h A over the emptied and the kept
+#         cells (J from 0/zb in python, 1e-9), releasedVolume
+#         terrainMapping's, and avalancheSurface's bed (X, Y, zb) and flow
+#         surface bed + h n (1e-9); on the grid rotated by 30 deg, .tif
+#         alone with the rotated geotransform and the flow surface h (sin
+#         35, 0, cos 35) above the bed; refused with nothing written: a
+#         mapping mode polar, a plan mapping without coordinates plan (both
+#         tools), a bad line of centreOfMass.dat, a time without h.
 #     Prints one line per check and "N passed, M failed, K skipped".
 #
 # Usage

@@ -277,8 +277,8 @@ void writePlanReport
     const planRunout r = runoutOf(threshold, mapping, h0, fields);
     const comPath path = comPathOf(mapping, times, now, J, fields.zb);
     const scalar s = pathLength(path.points);
-    const scalar dz =
-        path.points.empty() ? 0 : path.points.front()[2] - path.points.back()[2];
+    const std::vector<terrain::vec3>& P = path.points;
+    const scalar dz = P.empty() ? 0 : P.front()[2] - P.back()[2];
     const scalar comAngle = radToDeg(std::atan2(dz, s));
     const scalar alpha = travelAngle(r.top, r.point);
 
