@@ -110,7 +110,7 @@ cp "$project"/tutorials/inclinedPlane/constant/transportProperties \
 # cells reaches X < 1000 where zb is -22 m), steepEdge (steep on the 240 m
 # from X = 1000: that normal leaves the DEM, refused in section 6), each
 # .asc with full precision; infinite (the plane with an elevation inf,
-# refused); .tif through gdal_translate
+# refused); quad (quadratic, section 9); .tif through gdal_translate
 $python - "$work/dem" <<'PYEOF'
 import math, sys
 out = sys.argv[1]
@@ -137,8 +137,11 @@ t = 0.55/math.cos(math.radians(35))
 write("steepEdge", lambda X, Y: plane(X, Y) + t*(Y - 5080))
 write("infinite", lambda X, Y: math.inf if abs(X - 1100) < 2 and abs(Y - 5090) < 2
       else plane(X, Y))
+# quad: a quadratic bed for the plan mode's maps (section 9)
+write("quad", lambda X, Y: 2000 - 0.5*(X - 1000) + 0.002*(X - 1000)**2
+      + 0.003*(Y - 5080)**2)
 PYEOF
-[ $? -eq 0 ] || fail "writing the DEMs plane.asc, tilted.asc, hole.asc, steep.asc, gentle.asc, steepEdge.asc, infinite.asc"
+[ $? -eq 0 ] || fail "writing the DEMs plane.asc, tilted.asc, hole.asc, steep.asc, gentle.asc, steepEdge.asc, infinite.asc, quad.asc"
 gdal_translate -q --config AAIGRID_DATATYPE Float64 -ot Float64 "$work/dem/plane.asc" "$work/dem/plane.tif" \
     || fail "gdal_translate plane.asc plane.tif"
 cp "$work/dem"/*.asc "$work/dem"/*.tif "$work/base/constant/" \
@@ -1040,24 +1043,10 @@ expectRefusal "plan mode, release outside the grid" "'polygon'" - \
 # -- 9. hazardMaps and avalancheSurface in the plan mode (synthetic times) -------
 # The solver's plan mode is not there yet: the time directories are written
 # here (h, hMax, UMax, U per cell, the formats of 0/h and 0/U), on plan
-# cases of the plane (35 deg down X), a quadratic bed (quad.asc, below) and
+# cases of the plane (35 deg down X), a quadratic bed (quad.asc) and
 # the plane on the grid rotated by 30 deg.  The expected values are worked
 # out by hand or in python from the case's own 0/zb (centred differences,
 # one-sided at the edges), not taken from the tools' output.
-$python - "$work/base/constant" <<'PYEOF'
-import sys
-out = sys.argv[1]
-nx, ny, d, x0, y0 = 120, 80, 2.0, 1000.0, 5000.0
-with open(f"{out}/quad.asc", "w") as o:
-    o.write(f"ncols {nx}\nnrows {ny}\nxllcorner {x0}\nyllcorner {y0}\n"
-            f"cellsize {d}\nNODATA_value -9999\n")
-    for j in range(ny):
-        Y = y0 + (ny - j - 0.5)*d
-        o.write(" ".join("%.17g" % (2000 - 0.5*(X - 1000) + 0.002*(X - 1000)**2
-                                    + 0.003*(Y - 5080)**2)
-                         for X in (x0 + (i + 0.5)*d for i in range(nx))) + "\n")
-PYEOF
-[ $? -eq 0 ] || fail "writing the quadratic DEM quad.asc"
 
 # The helpers of this section's python: the plan case's grid and bed, the
 # fields written into a time directory, report.dat, the .vtp files
