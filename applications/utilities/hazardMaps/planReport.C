@@ -124,7 +124,7 @@ std::vector<comSample> readComFile(const fileName& file)
         )
         {
             FatalErrorInFunction
-                << file << " line " << n << ": '" << line << "' is not"
+                << file << " line " << n << ": " << line << " is not"
                 << " 'time x y z' (finite numbers, times increasing)" << nl
                 << "Nothing written." << nl << exit(FatalError);
         }
