@@ -80,7 +80,8 @@
 #         alone with the rotated geotransform and the flow surface h (sin
 #         35, 0, cos 35) above the bed; refused with nothing written: a
 #         mapping mode polar, a plan mapping without coordinates plan (both
-#         tools), a bad line of centreOfMass.dat, a time without h.
+#         tools), a bad line of centreOfMass.dat, one starting after the
+#         report's time, a time without h on the path.
 #     Prints one line per check and "N passed, M failed, K skipped".
 #
 # Usage
@@ -1222,11 +1223,14 @@ msg = "comPathLength %.15g m (240), comTravelAngle %.15g deg (atan(2/3 tan35) = 
 r = report(3)
 want = [1152.5, 5157.5, 2000 - 152.5*a35]
 alpha = math.degrees(math.atan(130*a35/math.hypot(130, 135)))
-ok = all(close(r[k], w) for k, w in zip(["runoutX", "runoutY", "runoutZ"], want)) \
+keys = ["releasedVolume", "depositVolume", "runoutX", "runoutY", "runoutZ", "travelAngle",
+        "comTravelAngle", "outflowVolume", "comPathLength"]
+ok = sorted(r) == sorted(keys) \
+    and all(close(r[k], w) for k, w in zip(["runoutX", "runoutY", "runoutZ"], want)) \
     and close(r["travelAngle"], alpha) and abs(r["outflowVolume"]) < 1e-9*r["releasedVolume"] \
     and close(r["releasedVolume"], 2*25/math.cos(math.radians(35))) \
     and close(r["depositVolume"], r["releasedVolume"])
-msg = "runout (%.15g %.15g %.15g), want %s; travelAngle %.15g deg (%.15g); released %.15g m^3 (50/cos35), outflow %.3g m^3" % (r["runoutX"], r["runoutY"], r["runoutZ"], want, r["travelAngle"], alpha, r["releasedVolume"], r["outflowVolume"])'
+msg = "keys %s; runout (%.15g %.15g %.15g), want %s; travelAngle %.15g deg (%.15g); released %.15g m^3 (50/cos35), outflow %.3g m^3" % (" ".join(r), r["runoutX"], r["runoutY"], r["runoutZ"], want, r["travelAngle"], alpha, r["releasedVolume"], r["outflowVolume"])'
         synth "$c" "rasters on the plan grid" '
 out = case + "/postProcessing/hazardMaps/3/"
 lines = open(out + "hMax.asc").read().split("\n")
@@ -1270,6 +1274,9 @@ msg = "comPathLength %.15g m (150), comTravelAngle %.15g deg (atan(1/3) = %.15g)
     fi
     rm -rf "$work/haz-comfile/postProcessing"
     mkdir -p "$work/haz-comfile/postProcessing"
+    printf '5 10 10 1990\n6 110 10 1950\n' > "$work/haz-comfile/postProcessing/centreOfMass.dat"
+    toolRefusal "$work/haz-comfile" "hazardMaps, centreOfMass.dat starting after the report's time" \
+        "centreOfMass.dat.* starts at time 5, after the chosen time 3" "hazardMaps"
     printf '0 10 10 1990\n1 110 10\n' > "$work/haz-comfile/postProcessing/centreOfMass.dat"
     toolRefusal "$work/haz-comfile" "hazardMaps, a line of centreOfMass.dat without z" \
         "centreOfMass.dat.* line 2: .*is not .time x y z." "hazardMaps"

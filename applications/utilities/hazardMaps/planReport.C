@@ -239,12 +239,20 @@ planRunout runoutOf
 
 void checkComPath(const fvMesh& mesh, const hazardTimes& times)
 {
+    const instant& last = times.chosen.last();
     if (isFile(comFile(mesh)))
     {
-        readComFile(comFile(mesh));
+        const scalar start = readComFile(comFile(mesh)).front()[0];
+        if (!notAfter(start, times.chosen.first().value()))
+        {
+            FatalErrorInFunction
+                << comFile(mesh) << " starts at time " << start
+                << ", after the chosen time " << times.chosen.first().name()
+                << ": no centre of mass' path up to it" << nl
+                << "Nothing written." << nl << exit(FatalError);
+        }
         return;
     }
-    const instant& last = times.chosen.last();
     for (const instant& ti : times.numeric)
     {
         if
