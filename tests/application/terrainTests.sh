@@ -75,8 +75,9 @@
 #         cell values, nodata); on a quadratic bed, outflowVolume and
 #         depositVolume as sums of J h A over the emptied and the kept
 #         cells (J from 0/zb in python, 1e-9), releasedVolume
-#         terrainMapping's, and avalancheSurface's bed (X, Y, zb) and flow
-#         surface bed + h n (1e-9); on the grid rotated by 30 deg, .tif
+#         terrainMapping's, hazardMaps -statistics' raster a pixel a cell,
+#         and avalancheSurface's bed (X, Y, zb) and flow surface bed + h n
+#         (1e-9); on the grid rotated by 30 deg, .tif
 #         alone with the rotated geotransform and the flow surface h (sin
 #         35, 0, cos 35) above the bed; refused with nothing written: a
 #         mapping mode polar, a plan mapping without coordinates plan (both
@@ -1340,6 +1341,22 @@ for c in range(nx*ny):
 nWet = sum(1 for v in h1 if v > 0)
 ok = len(bed) == len(top) == nx*ny and eb < 1e-9 and et < 1e-9 and eu < 1e-6 and nWet > 0
 msg = "%d points (%d wet): max |bed - (X, Y, zb)| %.3g m, max |surface - (bed + h n)| %.3g m, max |U - (Ux, Uy, grad zb.U)| %.3g (Float32 data)" % (len(bed), nWet, eb, et, eu)'
+        # -statistics: an ensemble's field (here hMax of t = 1 as
+        # hMaxMean) as a raster on the plan grid, every cell its pixel
+        mkdir -p "$c/ensemble/statistics/1"
+        sed 's/^\( *object *\)hMax;/\1hMaxMean;/' "$c/1/hMax" > "$c/ensemble/statistics/1/hMaxMean"
+        if (cd "$c" && runApplication -s statistics hazardMaps -statistics > /dev/null)
+        then
+            synth "$c" "hazardMaps -statistics on the plan grid" '
+lines = open(case + "/postProcessing/hazardMaps/ensemble/1/hMaxMean.asc").read().split("\n")
+rows = [l.split() for l in lines[6:] if l.strip()]
+f = readField("1", "hMax")
+e = max(abs(float(rows[ny - 1 - c // nx][c % nx]) - f[c]) for c in range(nx*ny))
+ok = len(rows) == ny and all(len(r) == nx for r in rows) and e < 1e-9 and max(f) > 0
+msg = "hMaxMean.asc %d x %d, max |pixel - cell| %.3g" % (len(rows[0]), len(rows), e)'
+        else
+            fail "plan-mode maps, hazardMaps -statistics failed (see $c/log.hazardMaps.statistics)"
+        fi
     else
         fail "plan-mode maps, the quadratic bed: writing the times, hazardMaps or avalancheSurface failed (see $c/log.*)"
     fi
