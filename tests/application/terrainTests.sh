@@ -63,6 +63,26 @@
 #         polygon or a thickness), a shapefile and a raster in a system no
 #         transformation reaches, a DEM whose pixels have no area: refused
 #         as above.
+#       - hazardMaps and avalancheSurface in the plan mode, on time
+#         directories written here (the solver's plan mode is not there
+#         yet): a known centre-of-mass path on the plane (3 legs of 80 m:
+#         comPathLength 240 m, comTravelAngle atan(2/3 tan 35), 1e-9) and
+#         one read from postProcessing/centreOfMass.dat (an L of 100 + 50 m
+#         dropping 50 m, a line after the report's time left out); the
+#         runout cell horizontally furthest from the release (not the
+#         lowest; a further cell below the threshold left out) and its
+#         travel angle; the rasters on the plan grid (size, georeference,
+#         cell values, nodata); on a quadratic bed, outflowVolume and
+#         depositVolume as sums of J h A over the emptied and the kept
+#         cells (J from 0/zb in python, 1e-9), releasedVolume
+#         terrainMapping's, hazardMaps -statistics' raster a pixel a cell,
+#         and avalancheSurface's bed (X, Y, zb) and flow surface bed + h n
+#         (1e-9); on the grid rotated by 30 deg, .tif
+#         alone with the rotated geotransform and the flow surface h (sin
+#         35, 0, cos 35) above the bed; refused with nothing written: a
+#         mapping mode polar, a plan mapping without coordinates plan (both
+#         tools), a bad line of centreOfMass.dat, one starting after the
+#         report's time, a time without h on the path.
 #     Prints one line per check and "N passed, M failed, K skipped".
 #
 # Usage
@@ -92,7 +112,7 @@ cp "$project"/tutorials/inclinedPlane/constant/transportProperties \
 # cells reaches X < 1000 where zb is -22 m), steepEdge (steep on the 240 m
 # from X = 1000: that normal leaves the DEM, refused in section 6), each
 # .asc with full precision; infinite (the plane with an elevation inf,
-# refused); .tif through gdal_translate
+# refused); quad (quadratic, section 9); .tif through gdal_translate
 $python - "$work/dem" <<'PYEOF'
 import math, sys
 out = sys.argv[1]
@@ -119,8 +139,11 @@ t = 0.55/math.cos(math.radians(35))
 write("steepEdge", lambda X, Y: plane(X, Y) + t*(Y - 5080))
 write("infinite", lambda X, Y: math.inf if abs(X - 1100) < 2 and abs(Y - 5090) < 2
       else plane(X, Y))
+# quad: a quadratic bed for the plan mode's maps (section 9)
+write("quad", lambda X, Y: 2000 - 0.5*(X - 1000) + 0.002*(X - 1000)**2
+      + 0.003*(Y - 5080)**2)
 PYEOF
-[ $? -eq 0 ] || fail "writing the DEMs plane.asc, tilted.asc, hole.asc, steep.asc, gentle.asc, steepEdge.asc, infinite.asc"
+[ $? -eq 0 ] || fail "writing the DEMs plane.asc, tilted.asc, hole.asc, steep.asc, gentle.asc, steepEdge.asc, infinite.asc, quad.asc"
 gdal_translate -q --config AAIGRID_DATATYPE Float64 -ot Float64 "$work/dem/plane.asc" "$work/dem/plane.tif" \
     || fail "gdal_translate plane.asc plane.tif"
 cp "$work/dem"/*.asc "$work/dem"/*.tif "$work/base/constant/" \
@@ -1018,5 +1041,389 @@ expectRefusal "plan mode, nodata under the grid" "'dem'" - \
     "writePlanDict . constant/hole.asc" "cell centres of the plan grid lie next to nodata"
 expectRefusal "plan mode, release outside the grid" "'polygon'" - \
     "writePlanDict . constant/plane.asc normal 'extent ((1000 5000) (1080 5160));'" "outside the plan grid"
+
+# -- 9. hazardMaps and avalancheSurface in the plan mode (synthetic times) -------
+# The solver's plan mode is not there yet: the time directories are written
+# here (h, hMax, UMax, U per cell, the formats of 0/h and 0/U), on plan
+# cases of the plane (35 deg down X), a quadratic bed (quad.asc) and
+# the plane on the grid rotated by 30 deg.  The expected values are worked
+# out by hand or in python from the case's own 0/zb (centred differences,
+# one-sided at the edges), not taken from the tools' output.
+
+# The helpers of this section's python: the plan case's grid and bed, the
+# fields written into a time directory, report.dat, the .vtp files
+cat > "$work/synth.py" <<'PYEOF'
+import base64, math, os, re, struct
+import xml.etree.ElementTree as ET
+case = None
+def entry(text, key):
+    return re.search(r"^%s\s+([^;]*);" % key, text, re.M).group(1)
+def vec(text, key):
+    return [float(v) for v in entry(text, key).strip("()").split()]
+def load(c):
+    """the plan case c: nx, ny, cs, origin, xAxis, yAxis, zb (0/zb)"""
+    global case, nx, ny, cs, origin, xAxis, yAxis, zb
+    case = c
+    tm = open(f"{c}/constant/terrainMapping").read()
+    nx, ny, cs = int(entry(tm, "nx")), int(entry(tm, "ny")), float(entry(tm, "cellSize"))
+    origin, xAxis, yAxis = vec(tm, "origin"), vec(tm, "xAxis"), vec(tm, "yAxis")
+    zb = readField("0", "zb")
+def readField(t, name):
+    txt = open(f"{case}/{t}/{name}").read()
+    m = re.search(r"internalField\s+nonuniform\s+List<scalar>\s*\d+\s*\(([^)]*)\)", txt)
+    return [float(v) for v in m.group(1).split()]
+def cell(i, j):
+    return i + nx*j
+def XY(c):
+    x, y = (c % nx + 0.5)*cs, (c // nx + 0.5)*cs
+    return (origin[0] + x*xAxis[0] + y*yAxis[0], origin[1] + x*xAxis[1] + y*yAxis[1])
+def grad(c):
+    """centred differences of zb, one-sided at the edges (case x, y)"""
+    i, j = c % nx, c // nx
+    im, ip, jm, jp = max(i - 1, 0), min(i + 1, nx - 1), max(j - 1, 0), min(j + 1, ny - 1)
+    gx = (zb[cell(ip, j)] - zb[cell(im, j)])/((ip - im)*cs) if ip > im else 0
+    gy = (zb[cell(i, jp)] - zb[cell(i, jm)])/((jp - jm)*cs) if jp > jm else 0
+    return gx, gy
+def J(c):
+    gx, gy = grad(c)
+    return math.sqrt(1 + gx*gx + gy*gy)
+def write(t, name, values):
+    """a field in time directory t: a list of numbers (volScalarField) or
+    of 3-tuples (volVectorField), in the format of 0/h or 0/U"""
+    vector = isinstance(values[0], tuple)
+    src = open(f"{case}/0/{'U' if vector else 'h'}").read()
+    if vector:
+        body = "nonuniform List<vector>\n%d\n(\n%s\n)" % (len(values), "\n".join(
+            "(%.17g %.17g %.17g)" % v for v in values))
+    else:
+        body = "nonuniform List<scalar>\n%d\n(\n%s\n)" % (len(values), "\n".join(
+            "%.17g" % v for v in values))
+    txt = re.sub(r"internalField[^;]*;", lambda m: "internalField   " + body + ";", src, count=1)
+    txt = re.sub(r"location\s+\"?[^;]*;", 'location    "%s";' % t, txt, count=1)
+    txt = re.sub(r"object\s+\S+;", "object      %s;" % name, txt, count=1)
+    os.makedirs(f"{case}/{t}", exist_ok=True)
+    open(f"{case}/{t}/{name}", "w").write(txt)
+def cells(d):
+    """a scalar list from {(i, j): value}, 0 elsewhere"""
+    v = [0.0]*(nx*ny)
+    for (i, j), a in d.items():
+        v[cell(i, j)] = a
+    return v
+def report(t):
+    rep = {}
+    for line in open(f"{case}/postProcessing/hazardMaps/{t}/report.dat"):
+        if line.strip() and not line.startswith("#"):
+            k, v = line.split()
+            rep[k] = float(v)
+    return rep
+def close(a, b, rel=1e-9):
+    return abs(a - b) <= rel*max(abs(b), 1e-300)
+def vtpPoints(path):
+    """points and point data of a .vtp (VTK XML binary, UInt32 headers)"""
+    def array(e):
+        raw = base64.b64decode("".join(e.text.split()))
+        n = struct.unpack("<I", raw[:4])[0]
+        t = {"Float32": "f", "Float64": "d"}[e.get("type")]
+        vals = struct.unpack("<%d%s" % (n//struct.calcsize(t), t), raw[4:4 + n])
+        k = int(e.get("NumberOfComponents", "1"))
+        return [vals[i:i + k] for i in range(0, len(vals), k)] if k > 1 else list(vals)
+    piece = ET.parse(path).getroot().find("PolyData/Piece")
+    return array(piece.find("Points/DataArray")), \
+        {a.get("Name"): array(a) for a in piece.findall("PointData/DataArray")}
+PYEOF
+
+#- synth <case> <what> <python over synth.py's helpers, the case loaded;
+#  sets ok and msg>: PASS or FAIL with msg (a python error is a FAIL)
+synth()
+{
+    local msg
+    if msg="$(cd "$work" && $python - "$1" "$3" 2>&1 <<'PYEOF'
+import math, sys
+from synth import *
+load(sys.argv[1])
+from synth import *   # (the names load set)
+a35 = math.tan(math.radians(35))
+ok, msg = False, "no result"
+exec(sys.argv[2])
+print(msg)
+sys.exit(0 if ok else 1)
+PYEOF
+)"
+    then
+        pass "plan-mode maps, $2: $msg"
+    else
+        fail "plan-mode maps, $2: $msg"
+    fi
+}
+
+#- hazPlanCase <name> <dem>: a plan case (writePlanDict's release) with
+#  rho, through blockMesh; sets c
+hazPlanCase()
+{
+    planCase "$1" "$2" || return 1
+    sed -i 's/^phi /rho             1500;\nphi /' "$c/constant/transportProperties"
+    (cd "$c" && runApplication blockMesh > /dev/null) && return 0
+    fail "$1: blockMesh failed (see $c/log.blockMesh)"
+    return 1
+}
+
+#- toolRefusal <case> <what> <regex the log must hold> <command>: the tool
+#  exits non-zero (not by a signal) with the regex in its log and no file
+#  written or changed
+toolRefusal()
+{
+    local c="$1" what="$2" want="$3" before after rc problems=""
+    before="$(snapshot "$c")"
+    (cd "$c" && eval "$4" > log.refusal 2>&1)
+    rc=$?
+    after="$(snapshot "$c")"
+    [ $rc -ne 0 ] || problems="$problems exit 0;"
+    [ $rc -lt 128 ] || problems="$problems killed by signal $((rc - 128));"
+    grep -q "$want" "$c/log.refusal" || problems="$problems no '$want' in the log;"
+    [ "$before" = "$after" ] || problems="$problems files written;"
+    if [ -z "$problems" ]
+    then
+        pass "refused, $what: $(grep -m1 -A1 'FOAM FATAL' "$c/log.refusal" | tail -n1 | cut -c1-150)"
+    else
+        fail "$what:$problems (see $c/log.refusal)"
+    fi
+}
+
+# 9a. On the plane: the mass in cell (4, 4) at t = 0, (19, 4) and (21, 4)
+# at t = 1 (their centre (20, 4)), (20, 20) at t = 2, (36, 20) at t = 3: a
+# path of 3 x 16 cells of 5 m, s = 240 m, dropping 160 tan 35 (x from 4 to
+# 36), so comTravelAngle = atan(2/3 tan 35).  hMax > 0.01 also at (30, 31):
+# horizontally furthest from the release (4, 4), sqrt(130^2 + 135^2) m,
+# though higher than (36, 20); (47, 31) further still has hMax 0.005, below
+# the threshold.  So runout (1152.5, 5157.5, 2000 - 152.5 tan 35) and alpha
+# = atan(130 tan 35 / sqrt(130^2 + 135^2)); nothing leaves: outflow 0.
+if hazPlanCase haz-path constant/plane.asc
+then
+    if (cd "$work" && $python - "$c" <<'PYEOF'
+import sys
+from synth import *
+load(sys.argv[1])
+from synth import *   # (the names load set)
+path = {0: {(4, 4): 2}, 1: {(19, 4): 1, (21, 4): 1}, 2: {(20, 20): 2}, 3: {(36, 20): 2}}
+for t, d in path.items():
+    write(str(t), "h", cells(d))
+peak = {k: 2 for d in path.values() for k in d}
+peak.update({(30, 31): 0.5, (47, 31): 0.005})
+write("3", "hMax", cells(peak))
+write("3", "UMax", cells({k: 1 for k in peak}))
+write("3", "U", [(1.0, 0.0, 0.0)]*(nx*ny))
+PYEOF
+    ) && (cd "$c" && runApplication hazardMaps > /dev/null)
+    then
+        synth "$c" "centre of mass' path on the plane" '
+r = report(3)
+want = math.degrees(math.atan(2*a35/3))
+ok = close(r["comPathLength"], 240) and close(r["comTravelAngle"], want)
+msg = "comPathLength %.15g m (240), comTravelAngle %.15g deg (atan(2/3 tan35) = %.15g)" % (r["comPathLength"], r["comTravelAngle"], want)'
+        synth "$c" "runout and travel angle on the plane" '
+r = report(3)
+want = [1152.5, 5157.5, 2000 - 152.5*a35]
+alpha = math.degrees(math.atan(130*a35/math.hypot(130, 135)))
+keys = ["releasedVolume", "depositVolume", "runoutX", "runoutY", "runoutZ", "travelAngle",
+        "comTravelAngle", "outflowVolume", "comPathLength"]
+ok = sorted(r) == sorted(keys) \
+    and all(close(r[k], w) for k, w in zip(["runoutX", "runoutY", "runoutZ"], want)) \
+    and close(r["travelAngle"], alpha) and abs(r["outflowVolume"]) < 1e-9*r["releasedVolume"] \
+    and close(r["releasedVolume"], 2*25/math.cos(math.radians(35))) \
+    and close(r["depositVolume"], r["releasedVolume"])
+msg = "keys %s; runout (%.15g %.15g %.15g), want %s; travelAngle %.15g deg (%.15g); released %.15g m^3 (50/cos35), outflow %.3g m^3" % (" ".join(r), r["runoutX"], r["runoutY"], r["runoutZ"], want, r["travelAngle"], alpha, r["releasedVolume"], r["outflowVolume"])'
+        synth "$c" "rasters on the plan grid" '
+out = case + "/postProcessing/hazardMaps/3/"
+lines = open(out + "hMax.asc").read().split("\n")
+head = dict(l.split() for l in lines[:6])
+rows = [l.split() for l in lines[6:] if l.strip()]
+px = lambda i, j: float(rows[ny - 1 - j][i])
+import json, subprocess
+info = json.loads(subprocess.run(["gdalinfo", "-json", out + "hMax.tif"], capture_output=True, text=True).stdout)
+gt = [1000, 5, 0, 5160, 0, -5]
+ok = (int(head["ncols"]), int(head["nrows"])) == (nx, ny) == (48, 32) \
+    and float(head["xllcorner"]) == 1000 and float(head["yllcorner"]) == 5000 \
+    and float(head["cellsize"]) == 5 and px(30, 31) == 0.5 and px(4, 4) == 2 \
+    and px(47, 31) == -9999 and px(0, 0) == -9999 \
+    and all(abs(a - b) < 1e-9 for a, b in zip(info["geoTransform"], gt)) \
+    and info["size"] == [48, 32]
+msg = "hMax.asc %sx%s cells of %s m from (%s, %s), cell (30, 31) %s, (4, 4) %s, (47, 31) below the threshold %s; hMax.tif geotransform %s" % (head["ncols"], head["nrows"], head["cellsize"], head["xllcorner"], head["yllcorner"], px(30, 31), px(4, 4), px(47, 31), info["geoTransform"])'
+    else
+        fail "plan-mode maps, the plane: writing the times or hazardMaps failed (see $c/log.hazardMaps)"
+    fi
+
+    # postProcessing/centreOfMass.dat instead of the time directories: an
+    # L-shaped path to t = 2 (100 m along x, 50 m along y, a drop of 50 m),
+    # its line at t = 5 after the report's time left out: s = 150 m,
+    # comTravelAngle atan(1/3)
+    rm -rf "$work/haz-comfile"
+    cp -r "$c" "$work/haz-comfile"
+    rm -rf "$work/haz-comfile/postProcessing"
+    mkdir -p "$work/haz-comfile/postProcessing"
+    printf '# time x y z\n0 10 10 1990\n1 110 10 1950\n2 110 60 1940\n5 300 300 0\n' \
+        > "$work/haz-comfile/postProcessing/centreOfMass.dat"
+    if (cd "$work/haz-comfile" && runApplication hazardMaps > /dev/null)
+    then
+        synth "$work/haz-comfile" "centre of mass' path from postProcessing/centreOfMass.dat" '
+r = report(3)
+want = math.degrees(math.atan(1/3))
+ok = close(r["comPathLength"], 150) and close(r["comTravelAngle"], want) \
+    and "centreOfMass.dat" in open(case + "/log.hazardMaps").read()
+msg = "comPathLength %.15g m (150), comTravelAngle %.15g deg (atan(1/3) = %.15g)" % (r["comPathLength"], r["comTravelAngle"], want)'
+    else
+        fail "plan-mode maps, centreOfMass.dat: hazardMaps failed (see $work/haz-comfile/log.hazardMaps)"
+    fi
+    rm -rf "$work/haz-comfile/postProcessing"
+    mkdir -p "$work/haz-comfile/postProcessing"
+    printf '5 10 10 1990\n6 110 10 1950\n' > "$work/haz-comfile/postProcessing/centreOfMass.dat"
+    toolRefusal "$work/haz-comfile" "hazardMaps, centreOfMass.dat starting after the report's time" \
+        "centreOfMass.dat.* starts at time 5, after the chosen time 3" "hazardMaps"
+    printf '0 10 10 1990\n1 110 10\n' > "$work/haz-comfile/postProcessing/centreOfMass.dat"
+    toolRefusal "$work/haz-comfile" "hazardMaps, a line of centreOfMass.dat without z" \
+        "centreOfMass.dat.* line 2: .*is not .time x y z." "hazardMaps"
+    rm -rf "$work/haz-comfile/postProcessing" "$work/haz-comfile/2/h"
+    toolRefusal "$work/haz-comfile" "hazardMaps, a time directory without h on the path" \
+        "No field h in .*/2.: the centre of mass' path" "hazardMaps"
+fi
+
+# 9b. On the quadratic bed (J varies from cell to cell): the release of
+# terrainToCase at t = 0; at t = 1 the cells of it with X > 1080 emptied
+# (left the domain), the rest kept.  releasedVolume that of terrainMapping,
+# outflowVolume the sum of J h A over the emptied cells, depositVolume over
+# the rest (J from 0/zb here); then avalancheSurface at t = 1: the bed at
+# (X, Y, zb), the flow surface bed + h n, n = (-grad zb, 1)/J, the velocity
+# (U_x, U_y, grad zb . U) to 1e-9
+if hazPlanCase haz-quad constant/quad.asc
+then
+    if (cd "$work" && $python - "$c" <<'PYEOF'
+import sys
+from synth import *
+load(sys.argv[1])
+from synth import *   # (the names load set)
+h0 = readField("0", "h")
+h1 = [0.0 if XY(c)[0] > 1080 else h0[c] for c in range(nx*ny)]
+write("1", "h", h1)
+write("1", "hMax", h0)
+write("1", "UMax", [1.0 if v > 0 else 0.0 for v in h0])
+write("1", "U", [(0.3 + 0.001*c, -0.2, 0.0) if h1[c] > 0 else (0.0, 0.0, 0.0) for c in range(nx*ny)])
+PYEOF
+    ) && (cd "$c" && runApplication hazardMaps > /dev/null \
+        && runApplication avalancheSurface -time 1 > /dev/null)
+    then
+        synth "$c" "outflowVolume on the quadratic bed" '
+r = report(1)
+h0, h1 = readField("0", "h"), readField("1", "h")
+gone = sum(J(c)*h0[c]*cs*cs for c in range(nx*ny) if h0[c] > 0 and h1[c] == 0)
+kept = sum(J(c)*h1[c]*cs*cs for c in range(nx*ny))
+mapped = float(entry(open(case + "/constant/terrainMapping").read(), "releasedVolume"))
+nGone = sum(1 for c in range(nx*ny) if h0[c] > 0 and h1[c] == 0)
+Js = [J(c) for c in range(nx*ny) if h0[c] > 0]
+ok = close(r["outflowVolume"], gone) and close(r["depositVolume"], kept) \
+    and close(r["releasedVolume"], mapped, 1e-12) and nGone > 0 and gone > 0 \
+    and max(Js) - min(Js) > 0.01
+msg = "outflowVolume %.15g m^3 (%d emptied cells: %.15g), depositVolume %.15g (%.15g), releasedVolume %.15g (terrainMapping %.15g); J in [%.4f, %.4f]" % (r["outflowVolume"], nGone, gone, r["depositVolume"], kept, r["releasedVolume"], mapped, min(Js), max(Js))'
+        synth "$c" "avalancheSurface on the quadratic bed" '
+out = case + "/postProcessing/avalancheSurface/"
+bed, data = vtpPoints(out + "bed_1.vtp")
+top, _ = vtpPoints(out + "surface_1.vtp")
+h1 = readField("1", "h")
+U = [(0.3 + 0.001*c, -0.2) if h1[c] > 0 else (0.0, 0.0) for c in range(nx*ny)]
+eb = et = eu = 0
+for c in range(nx*ny):
+    X, Y = XY(c)
+    gx, gy = grad(c)
+    j = J(c)
+    n = (-gx/j, -gy/j, 1/j)
+    eb = max(eb, max(abs(a - b) for a, b in zip(bed[c], (X, Y, zb[c]))))
+    et = max(et, max(abs(top[c][k] - (bed[c][k] + h1[c]*n[k])) for k in range(3)))
+    want = (U[c][0], U[c][1], gx*U[c][0] + gy*U[c][1])
+    eu = max(eu, max(abs(data["U"][c][k] - want[k]) for k in range(3))/max(1, abs(want[0])))
+nWet = sum(1 for v in h1 if v > 0)
+ok = len(bed) == len(top) == nx*ny and eb < 1e-9 and et < 1e-9 and eu < 1e-6 and nWet > 0
+msg = "%d points (%d wet): max |bed - (X, Y, zb)| %.3g m, max |surface - (bed + h n)| %.3g m, max |U - (Ux, Uy, grad zb.U)| %.3g (Float32 data)" % (len(bed), nWet, eb, et, eu)'
+        # -statistics: an ensemble's field (here hMax of t = 1 as
+        # hMaxMean) as a raster on the plan grid, every cell its pixel
+        mkdir -p "$c/ensemble/statistics/1"
+        sed 's/^\( *object *\)hMax;/\1hMaxMean;/' "$c/1/hMax" > "$c/ensemble/statistics/1/hMaxMean"
+        if (cd "$c" && runApplication -s statistics hazardMaps -statistics > /dev/null)
+        then
+            synth "$c" "hazardMaps -statistics on the plan grid" '
+lines = open(case + "/postProcessing/hazardMaps/ensemble/1/hMaxMean.asc").read().split("\n")
+rows = [l.split() for l in lines[6:] if l.strip()]
+f = readField("1", "hMax")
+e = max(abs(float(rows[ny - 1 - c // nx][c % nx]) - f[c]) for c in range(nx*ny))
+ok = len(rows) == ny and all(len(r) == nx for r in rows) and e < 1e-9 and max(f) > 0
+msg = "hMaxMean.asc %d x %d, max |pixel - cell| %.3g" % (len(rows[0]), len(rows), e)'
+        else
+            fail "plan-mode maps, hazardMaps -statistics failed (see $c/log.hazardMaps.statistics)"
+        fi
+    else
+        fail "plan-mode maps, the quadratic bed: writing the times, hazardMaps or avalancheSurface failed (see $c/log.*)"
+    fi
+
+    # Refused, nothing written: a mapping mode neither plan nor axis; a
+    # plan mapping with transportProperties not in plan coordinates
+    cp "$c/constant/terrainMapping" "$c/constant/terrainMapping.good"
+    sed -i 's/^mode .*/mode            polar;/' "$c/constant/terrainMapping"
+    toolRefusal "$c" "hazardMaps, terrainMapping of mode polar" \
+        "keyword 'mode' = polar" "hazardMaps"
+    grep -q "terrainMapping" "$c/log.refusal" \
+        || fail "hazardMaps, mode polar: terrainMapping not named"
+    toolRefusal "$c" "avalancheSurface, terrainMapping of mode polar" \
+        "keyword 'mode' = polar" "avalancheSurface"
+    grep -q "terrainMapping" "$c/log.refusal" \
+        || fail "avalancheSurface, mode polar: terrainMapping not named"
+    cp "$c/constant/terrainMapping.good" "$c/constant/terrainMapping"
+    sed -i '/^coordinates/d' "$c/constant/transportProperties"
+    toolRefusal "$c" "hazardMaps, a plan mapping without coordinates plan" \
+        "keyword 'coordinates'" "hazardMaps"
+    grep -q "transportProperties" "$c/log.refusal" \
+        || fail "hazardMaps, no coordinates plan: transportProperties not named"
+    toolRefusal "$c" "avalancheSurface, a plan mapping without coordinates plan" \
+        "keyword 'coordinates'" "avalancheSurface"
+    grep -q "transportProperties" "$c/log.refusal" \
+        || fail "avalancheSurface, no coordinates plan: transportProperties not named"
+fi
+
+# 9c. The plane on the grid rotated by 30 deg: hazardMaps writes .tif alone
+# with the plan grid's rotated geotransform; avalancheSurface's flow
+# surface lies h (sin 35, 0, cos 35) above the bed, the bed on the plane
+if hazPlanCase haz-rotated constant/rplane.tif
+then
+    if (cd "$work" && $python - "$c" <<'PYEOF'
+import sys
+from synth import *
+load(sys.argv[1])
+from synth import *   # (the names load set)
+write("1", "h", [1.0]*(nx*ny))
+write("1", "hMax", [1.0]*(nx*ny))
+write("1", "UMax", [1.0]*(nx*ny))
+write("1", "U", [(0.0, 0.0, 0.0)]*(nx*ny))
+PYEOF
+    ) && (cd "$c" && runApplication hazardMaps > /dev/null \
+        && runApplication avalancheSurface -time 1 > /dev/null)
+    then
+        synth "$c" "rotated grid: the rasters" '
+import glob, json, subprocess
+out = case + "/postProcessing/hazardMaps/1/"
+info = json.loads(subprocess.run(["gdalinfo", "-json", out + "hMax.tif"], capture_output=True, text=True).stdout)
+gt = [origin[0] + ny*cs*yAxis[0], cs*xAxis[0], -cs*yAxis[0], origin[1] + ny*cs*yAxis[1], cs*xAxis[1], -cs*yAxis[1]]
+ok = not glob.glob(out + "*.asc") and info["size"] == [nx, ny] \
+    and all(abs(a - b) < 1e-9 for a, b in zip(info["geoTransform"], gt)) \
+    and abs(xAxis[1] - 0.5) < 1e-12
+msg = ".tif alone, geotransform %s (origin + ny cs yAxis, cs xAxis, -cs yAxis: %s)" % (info["geoTransform"], gt)'
+        synth "$c" "rotated grid: avalancheSurface" '
+out = case + "/postProcessing/avalancheSurface/"
+bed, _ = vtpPoints(out + "bed_1.vtp")
+top, _ = vtpPoints(out + "surface_1.vtp")
+s, k = math.sin(math.radians(35)), math.cos(math.radians(35))
+ez = max(abs(p[2] - (2000 - a35*(p[0] - 1000))) for p in bed)
+en = max(max(abs(t[i] - b[i] - (s, 0, k)[i]) for i in range(3)) for b, t in zip(bed, top))
+ok = len(bed) == nx*ny and ez < 1e-9 and en < 1e-9
+msg = "%d points: max |bed Z - plane| %.3g m, max |surface - bed - (sin35, 0, cos35)| %.3g m" % (len(bed), ez, en)'
+    else
+        fail "plan-mode maps, the rotated grid: hazardMaps or avalancheSurface failed (see $c/log.*)"
+    fi
+fi
 
 finish

@@ -26,6 +26,13 @@ Description
     that time when written there, else of the first time, else 0); the flow
     surface is at offset zb + h.
 
+    The plan mode (constant/terrainMapping with mode plan, transportProperties
+    with coordinates plan; planSurface.H): the bed of a cell is (X, Y, zb),
+    X, Y its centre in the world by the mapping's origin and axes, and the
+    flow surface bed + h n, n = (-grad zb, 1)/J the bed's unit normal (h is
+    normal to the bed); U's x and y along the grid's axes in plan, its
+    vertical component tangent to the bed.
+
     The points are the cell centres of the structured grid (nx x ny cells of
     one block: the surface stops half a cell inside the mesh's edges), the
     polygons quads between neighbouring centres (lines when the grid is one
@@ -43,10 +50,10 @@ Description
     written.
 
     Stage by stage: surfaceInput (the options, the times, the structured
-    grid, the reference surface, rho, the checks; with terrainCase of
-    ../terrain, which hazardMaps shares), surfacePoints (a time's bed,
-    flow surface and point data) and vtkPolyData (the .vtp and .series
-    files).
+    grid, the reference surface or the plan grid, rho, the checks; with
+    terrainCase of ../terrain, which hazardMaps shares), surfacePoints (a
+    time's bed, flow surface and point data), planSurface (the same in the
+    plan mode) and vtkPolyData (the .vtp and .series files).
 
 Usage
     avalancheSurface [-time <ranges> | -latestTime | -noZero]
@@ -56,6 +63,7 @@ Usage
 
 #include "surfaceInput.H"
 #include "surfacePoints.H"
+#include "planSurface.H"
 #include "vtkPolyData.H"
 
 using namespace Foam;
@@ -76,10 +84,13 @@ int main(int argc, char *argv[])
 
     const structuredGrid grid = readGrid(mesh);
     const IOdictionary tp(transportPropertiesIO(runTime));
-    const terrain::referenceSurface surface = readSurface(runTime, grid, tp);
+    const surfaceGeometry geometry = readGeometry(runTime, grid, tp);
     const scalar rho = readDensity(tp);
     checkTimes(mesh, times.chosen);
-    const pointFrame frame = pointFrames(mesh, grid, surface);
+    const pointFrame frame =
+        geometry.plan
+      ? pointFrame()
+      : pointFrames(mesh, grid, geometry.surface);
 
     const fileName outDir = runTime.path()/"postProcessing"/"avalancheSurface";
     mkDir(outDir);
@@ -87,10 +98,21 @@ int main(int argc, char *argv[])
     for (const instant& t : times.chosen)
     {
         runTime.setTime(t, 0);
-        writeTime
-        (
-            outDir, mesh, grid, surface, frame, t.name(), firstTime, rho
-        );
+        if (geometry.plan)
+        {
+            writePlanTime
+            (
+                outDir, mesh, grid, geometry.grid, t.name(), firstTime, rho
+            );
+        }
+        else
+        {
+            writeTime
+            (
+                outDir, mesh, grid, geometry.surface, frame, t.name(),
+                firstTime, rho
+            );
+        }
     }
 
     writeSeries(outDir, "surface", times.numeric);

@@ -45,14 +45,9 @@ std::vector<double> distinct
 }
 
 
-//- The reference surface of constant/terrainMapping (mapDict), whose grid
-//  must be the mesh's
-terrain::referenceSurface mappedSurface
-(
-    const dictionary& mapDict, const structuredGrid& grid
-)
+//- The grid of constant/terrainMapping (mapDict) is the mesh's
+void checkMappingGrid(const dictionary& mapDict, const structuredGrid& grid)
 {
-    const terrain::referenceSurface surface = mappingSurface(mapDict);
     const label mnx = mapDict.get<label>("nx");
     const label mny = mapDict.get<label>("ny");
     if (mnx != grid.nx || mny != grid.ny)
@@ -63,9 +58,32 @@ terrain::referenceSurface mappedSurface
             << ": run blockMesh after terrainToCase" << nl
             << exit(FatalIOError);
     }
-    Info<< "Reference surface: constant/terrainMapping (world X, Y, Z)"
-        << nl;
-    return surface;
+}
+
+
+//- The geometry of constant/terrainMapping (mapDict; tp the
+//  transportProperties a plan mapping needs), whose grid must be the
+//  mesh's
+surfaceGeometry mappedGeometry
+(
+    const dictionary& mapDict, const dictionary& tp,
+    const structuredGrid& grid
+)
+{
+    surfaceGeometry g;
+    g.plan = planMode(mapDict, tp);
+    if (g.plan)
+    {
+        g.grid = mappingPlan(mapDict);
+    }
+    else
+    {
+        g.surface = mappingSurface(mapDict);
+    }
+    checkMappingGrid(mapDict, grid);
+    Info<< (g.plan ? "Plan grid" : "Reference surface")
+        << ": constant/terrainMapping (world X, Y, Z)" << nl;
+    return g;
 }
 
 
@@ -203,17 +221,7 @@ structuredGrid readGrid(const fvMesh& mesh)
 }
 
 
-IOobject transportPropertiesIO(const Time& runTime)
-{
-    return IOobject
-    (
-        "transportProperties", runTime.constant(), runTime,
-        IOobject::MUST_READ, IOobject::NO_WRITE
-    );
-}
-
-
-terrain::referenceSurface readSurface
+surfaceGeometry readGeometry
 (
     const Time& runTime, const structuredGrid& grid, const dictionary& tp
 )
@@ -222,9 +230,11 @@ terrain::referenceSurface readSurface
     if (mapIO.typeHeaderOk<IOdictionary>(true))
     {
         const IOdictionary mapDict(mapIO);
-        return mappedSurface(mapDict, grid);
+        return mappedGeometry(mapDict, tp, grid);
     }
-    return inclinationSurface(tp, grid);
+    surfaceGeometry g;
+    g.surface = inclinationSurface(tp, grid);
+    return g;
 }
 
 

@@ -11,17 +11,6 @@
 namespace Foam
 {
 
-namespace
-{
-
-//- zb per point: of time now when written there, else of firstTime, else
-//  0, and where from
-struct pointBed
-{
-    std::vector<double> zb;
-    word from;
-};
-
 pointBed bedOffsets
 (
     const fvMesh& mesh, const structuredGrid& grid, const word& now,
@@ -47,8 +36,6 @@ pointBed bedOffsets
 }
 
 
-//- The peak maps time now has, per point (hMax, UMax, pMax, tArrival), and
-//  pMax = rho UMax^2 where it has UMax but no pMax and rho > 0
 std::map<word, std::vector<double>> peakMaps
 (
     const fvMesh& mesh, const structuredGrid& grid, const word& now,
@@ -80,8 +67,6 @@ std::map<word, std::vector<double>> peakMaps
     }
     return extra;
 }
-
-} // End anonymous namespace
 
 
 pointFrame pointFrames
@@ -115,39 +100,54 @@ void writeTime
 )
 {
     const volVectorField& C = mesh.C();
-    const label nx = grid.nx, ny = grid.ny, nP = nx*ny;
+    const label nP = grid.nx*grid.ny;
     const volScalarField h(fieldIO(mesh, now, "h"), mesh);
     const volVectorField U(fieldIO(mesh, now, "U"), mesh);
     const pointBed offsets = bedOffsets(mesh, grid, now, firstTime);
     const std::vector<double>& zb = offsets.zb;
 
-    std::vector<terrain::vec3> bed(nP), top(nP), Uw(nP);
+    timePoints tp(nP);
+    for (label p = 0; p < nP; ++p)
+    {
+        const label c = grid.pointCell[p];
+        tp.bed[p] = surface.world(C[c].x(), C[c].y(), zb[p]);
+        tp.top[p] = surface.world(C[c].x(), C[c].y(), zb[p] + h[c]);
+        for (int k = 0; k < 3; ++k)
+        {
+            tp.U[p][k] = U[c].x()*frame.T[p][k] + U[c].y()*frame.N2[p][k];
+        }
+    }
+    writePoints(outDir, mesh, grid, now, rho, offsets, h, U, tp);
+}
+
+
+void writePoints
+(
+    const fileName& outDir, const fvMesh& mesh, const structuredGrid& grid,
+    const word& now, scalar rho, const pointBed& offsets,
+    const volScalarField& h, const volVectorField& U, const timePoints& tp
+)
+{
+    const label nx = grid.nx, ny = grid.ny, nP = nx*ny;
     std::vector<double> hp(nP), magU(nP);
     for (label p = 0; p < nP; ++p)
     {
         const label c = grid.pointCell[p];
-        bed[p] = surface.world(C[c].x(), C[c].y(), zb[p]);
-        top[p] = surface.world(C[c].x(), C[c].y(), zb[p] + h[c]);
         hp[p] = h[c];
-        for (int k = 0; k < 3; ++k)
-        {
-            Uw[p][k] = U[c].x()*frame.T[p][k] + U[c].y()*frame.N2[p][k];
-        }
         magU[p] = mag(U[c]);
     }
-
-    scalarPointData scalars{{"h", &hp}, {"magU", &magU}, {"zb", &zb}};
+    scalarPointData scalars{{"h", &hp}, {"magU", &magU}, {"zb", &offsets.zb}};
     const std::map<word, std::vector<double>> extra =
         peakMaps(mesh, grid, now, rho);
     for (const auto& e : extra)
     {
         scalars.push_back({e.first, &e.second});
     }
-    const vectorPointData vectors{{"U", &Uw}};
+    const vectorPointData vectors{{"U", &tp.U}};
 
-    writeVtp(outDir/("surface_" + now + ".vtp"), nx, ny, top, scalars,
+    writeVtp(outDir/("surface_" + now + ".vtp"), nx, ny, tp.top, scalars,
         vectors);
-    writeVtp(outDir/("bed_" + now + ".vtp"), nx, ny, bed, scalars,
+    writeVtp(outDir/("bed_" + now + ".vtp"), nx, ny, tp.bed, scalars,
         vectors);
     Info<< "Time " << now << ": " << nx << " x " << ny << " points,"
         << " zb of " << offsets.from << ", h max " << gMax(h) << ", data";

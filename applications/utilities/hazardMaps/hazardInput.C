@@ -156,12 +156,25 @@ hazardTimes selectTimes
 hazardTerrain readTerrain(const Time& runTime, const fvMesh& mesh)
 {
     const IOdictionary mapDict(terrainMappingIO(runTime));
+    const IOdictionary tp(transportPropertiesIO(runTime));
     hazardTerrain ht;
-    ht.surface = mappingSurface(mapDict);
-    ht.cellSize = mapDict.get<scalar>("cellSize");
-    ht.nx = mapDict.get<label>("nx");
-    ht.ny = mapDict.get<label>("ny");
-    ht.yMin = mapDict.get<scalar>("yMin");
+    ht.plan = planMode(mapDict, tp);
+    if (ht.plan)
+    {
+        ht.grid = mappingPlan(mapDict);
+        ht.cellSize = ht.grid.cellSize;
+        ht.nx = ht.grid.nx;
+        ht.ny = ht.grid.ny;
+        ht.yMin = 0;
+    }
+    else
+    {
+        ht.surface = mappingSurface(mapDict);
+        ht.cellSize = mapDict.get<scalar>("cellSize");
+        ht.nx = mapDict.get<label>("nx");
+        ht.ny = mapDict.get<label>("ny");
+        ht.yMin = mapDict.get<scalar>("yMin");
+    }
     if (mesh.nCells() != ht.nx*ht.ny)
     {
         FatalIOErrorInFunction(mapDict)
@@ -184,20 +197,35 @@ hazardTerrain readTerrain(const Time& runTime, const fvMesh& mesh)
         FatalIOErrorInFunction(mapDict)
             << "keyword 'dem': " << e.what() << nl << exit(FatalIOError);
     }
+    if (ht.plan)
+    {
+        ht.planRaster = planRaster(ht.grid, ht.dem.wkt);
+    }
     return ht;
+}
+
+
+terrain::Raster planRaster(const planGrid& g, const std::string& wkt)
+{
+    // Pixel corner (c, r) at X = origin + cellSize (c xAxis + (ny - r)
+    // yAxis): row 0 the grid's last row (largest y), as rasters run
+    const double cs = g.cellSize;
+    terrain::Raster r;
+    r.nx = int(g.nx);
+    r.ny = int(g.ny);
+    r.gt =
+    {
+        g.origin[0] + g.ny*cs*g.yAxis[0], cs*g.xAxis[0], 0 - cs*g.yAxis[0],
+        g.origin[1] + g.ny*cs*g.yAxis[1], cs*g.xAxis[1], 0 - cs*g.yAxis[1]
+    };
+    r.wkt = wkt;
+    return r;
 }
 
 
 densityInput readDensity(const Time& runTime)
 {
-    const IOdictionary tp
-    (
-        IOobject
-        (
-            "transportProperties", runTime.constant(), runTime,
-            IOobject::MUST_READ, IOobject::NO_WRITE
-        )
-    );
+    const IOdictionary tp(transportPropertiesIO(runTime));
     densityInput d;
     d.hasRho = tp.found("rho");
     d.rho = tp.getOrDefault<scalar>("rho", 0);

@@ -39,6 +39,19 @@ Description
     Every chosen time is checked (hMax, UMax, h, and pMax or rho) before
     anything is written.
 
+    The plan mode (constant/terrainMapping with mode plan, made by
+    terrainToCase without axis; transportProperties with coordinates plan):
+    the rasters lie on the case's own plan grid, a pixel a cell, with the
+    georeference of the mapping's origin, xAxis, yAxis and cellSize and the
+    DEM's coordinate reference system (a grid rotated against north as .tif
+    alone); hMax and deposit are the thickness h normal to the bed.  The
+    report (planReport.H) holds the keys above, the volumes sums of J h A
+    (J = sqrt(1 + |grad zb|^2)), the runout point the footprint's cell
+    horizontally furthest from the highest released point, comTravelAngle
+    measured along the centre of mass' path, and adds outflowVolume and
+    comPathLength.  A mapping of another mode, or a plan mapping without
+    coordinates plan, is an error.
+
     -statistics: instead, the statistics of an ensemble (savageHutterFoam
     -ensemble, ensemble/statistics/<time>/: hMaxExceedance_<thr>,
     hMaxMean, hMaxP<p>, UMax..., pMax...) as rasters in
@@ -48,7 +61,8 @@ Description
 
     Stage by stage: hazardInput (the options, the times, the terrain
     mapping, rho, the checks), hazardRasters (pixels to cells, the maps,
-    the ensemble's statistics) and runoutReport (report.dat).
+    the ensemble's statistics), runoutReport (report.dat) and planReport
+    (the plan mode's report.dat).
 
 Usage
     hazardMaps [-time <ranges> | -latestTime] [-threshold 0.01]
@@ -61,6 +75,7 @@ Usage
 #include "hazardInput.H"
 #include "hazardRasters.H"
 #include "runoutReport.H"
+#include "planReport.H"
 
 using namespace Foam;
 
@@ -85,11 +100,15 @@ int main(int argc, char *argv[])
     const densityInput density = readDensity(runTime);
     const volScalarField h0(fieldIO(mesh, times.first, "h"), mesh);
     checkTimes(mesh, times, h0, density, threshold, statistics);
+    if (mapping.plan && !statistics)
+    {
+        checkComPath(mesh, times);
+    }
     const labelList pixelCell = pixelCells(mesh, mapping);
 
     if (statistics)
     {
-        writeStatistics(args, mesh, mapping.dem, pixelCell, statsTime);
+        writeStatistics(args, mesh, mapping.mapGrid(), pixelCell, statsTime);
     }
     else
     {
@@ -100,8 +119,21 @@ int main(int argc, char *argv[])
             const hazardFields fields(mesh, now, times.first, density.rho);
             const fileName outDir =
                 runTime.path()/"postProcessing"/"hazardMaps"/now;
-            writeMaps(outDir, fields, mapping.dem, pixelCell, threshold);
-            writeReport(outDir, now, threshold, mapping, h0, fields);
+            writeMaps
+            (
+                outDir, fields, mapping.mapGrid(), pixelCell, threshold
+            );
+            if (mapping.plan)
+            {
+                writePlanReport
+                (
+                    outDir, ti, threshold, mapping, times, h0, fields
+                );
+            }
+            else
+            {
+                writeReport(outDir, now, threshold, mapping, h0, fields);
+            }
         }
     }
     Info<< "End\n" << endl;

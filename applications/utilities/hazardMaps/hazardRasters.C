@@ -12,24 +12,25 @@ namespace Foam
 namespace
 {
 
-//- A raster on the DEM's grid from the value of each pixel's cell where
-//  `keep` says so, nodata (-9999) elsewhere, written as .asc and .tif (a
-//  rotated DEM's grid as GeoTIFF alone: ESRI ASCII is north-up)
+//- A raster on the maps' grid (the DEM's or the plan grid) from the
+//  value of each pixel's cell where `keep` says so, nodata (-9999)
+//  elsewhere, written as .asc and .tif (a rotated grid as GeoTIFF alone:
+//  ESRI ASCII is north-up)
 template<class Keep>
 void writeMap
 (
     const fileName& base,
-    const terrain::Raster& dem,
+    const terrain::Raster& grid,
     const labelList& pixelCell,
     const scalarField& f,
     const Keep& keep
 )
 {
     terrain::Raster r;
-    r.nx = dem.nx;
-    r.ny = dem.ny;
-    r.gt = dem.gt;
-    r.wkt = dem.wkt;
+    r.nx = grid.nx;
+    r.ny = grid.ny;
+    r.gt = grid.gt;
+    r.wkt = grid.wkt;
     r.hasNodata = true;
     r.nodata = -9999;
     r.z.assign(std::size_t(r.nx)*r.ny, r.nodata);
@@ -41,7 +42,7 @@ void writeMap
             r.z[p] = f[c];
         }
     }
-    for (const std::string& ext : terrain::rasterExtensions(dem))
+    for (const std::string& ext : terrain::rasterExtensions(grid))
     {
         try
         {
@@ -55,7 +56,9 @@ void writeMap
 }
 
 
-//- Mesh cell of each (i, j) of the structured grid
+} // End anonymous namespace
+
+
 labelList gridCells(const fvMesh& mesh, const hazardTerrain& t)
 {
     labelList cellOf(t.nx*t.ny, -1);
@@ -72,12 +75,23 @@ labelList gridCells(const fvMesh& mesh, const hazardTerrain& t)
     return cellOf;
 }
 
-} // End anonymous namespace
-
 
 labelList pixelCells(const fvMesh& mesh, const hazardTerrain& t)
 {
     const labelList cellOf = gridCells(mesh, t);
+    if (t.plan)
+    {
+        // Pixel (i, r) of the plan raster: cell (i, ny - 1 - r)
+        labelList pixelCell(t.nx*t.ny, -1);
+        for (label r = 0; r < t.ny; ++r)
+        {
+            for (label i = 0; i < t.nx; ++i)
+            {
+                pixelCell[i + t.nx*r] = cellOf[i + t.nx*(t.ny - 1 - r)];
+            }
+        }
+        return pixelCell;
+    }
     const terrain::Raster& dem = t.dem;
     labelList pixelCell(dem.nx*dem.ny, -1);
     for (label j = 0; j < dem.ny; ++j)
@@ -110,7 +124,7 @@ labelList pixelCells(const fvMesh& mesh, const hazardTerrain& t)
 
 void writeStatistics
 (
-    const argList& args, const fvMesh& mesh, const terrain::Raster& dem,
+    const argList& args, const fvMesh& mesh, const terrain::Raster& grid,
     const labelList& pixelCell, const word& statsTime
 )
 {
@@ -156,7 +170,7 @@ void writeStatistics
         const scalarField& f = fields[k].primitiveField();
         writeMap
         (
-            outDir/names[k], dem, pixelCell, f,
+            outDir/names[k], grid, pixelCell, f,
             [](const label) { return true; }
         );
         Info<< "    Wrote " << names[k] << ": range [" << gMin(f) << ", "
@@ -213,7 +227,7 @@ hazardFields::hazardFields
 void writeMaps
 (
     const fileName& outDir, const hazardFields& fields,
-    const terrain::Raster& dem, const labelList& pixelCell,
+    const terrain::Raster& grid, const labelList& pixelCell,
     scalar threshold
 )
 {
@@ -226,14 +240,14 @@ void writeMaps
         const bool arrival = name == "tArrival";
         writeMap
         (
-            outDir/name, dem, pixelCell, f,
+            outDir/name, grid, pixelCell, f,
             [&](const label c)
             {
                 return hMax[c] > threshold && !(arrival && f[c] < 0);
             }
         );
         Info<< "    Wrote " << name << " ("
-            << (dem.northUp() ? ".asc, .tif" : ".tif") << "): range ["
+            << (grid.northUp() ? ".asc, .tif" : ".tif") << "): range ["
             << gMin(f) << ", " << gMax(f) << "]" << nl;
     }
 }

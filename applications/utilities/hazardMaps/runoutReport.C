@@ -22,13 +22,6 @@ terrain::vec3 bedPoint
 }
 
 
-scalar travelAngle(const terrain::vec3& a, const terrain::vec3& b)
-{
-    const scalar dist = std::hypot(b[0] - a[0], b[1] - a[1]);
-    return radToDeg(std::atan2(a[2] - b[2], dist));
-}
-
-
 struct runout
 {
     scalar released = 0;
@@ -97,6 +90,13 @@ runout runoutOf
 }
 
 } // End anonymous namespace
+
+
+scalar travelAngle(const terrain::vec3& a, const terrain::vec3& b)
+{
+    const scalar dist = std::hypot(b[0] - a[0], b[1] - a[1]);
+    return radToDeg(std::atan2(a[2] - b[2], dist));
+}
 
 
 void writeReport

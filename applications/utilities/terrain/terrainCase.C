@@ -75,6 +75,16 @@ IOobject terrainMappingIO(const Time& runTime)
 }
 
 
+IOobject transportPropertiesIO(const Time& runTime)
+{
+    return IOobject
+    (
+        "transportProperties", runTime.constant(), runTime,
+        IOobject::MUST_READ, IOobject::NO_WRITE
+    );
+}
+
+
 terrain::referenceSurface mappingSurface(const dictionary& mapDict)
 {
     const List<vector2D> table = mapDict.get<List<vector2D>>("inclination");
@@ -90,6 +100,59 @@ terrain::referenceSurface mappingSurface(const dictionary& mapDict)
     (
         {o.x(), o.y(), o.z()}, t.x(), t.y(), xT, zT
     );
+}
+
+
+
+bool planMode(const dictionary& mapDict, const dictionary& tp)
+{
+    const word mode = mapDict.getOrDefault<word>("mode", "axis");
+    if (mode != "axis" && mode != "plan")
+    {
+        FatalIOErrorInFunction(mapDict)
+            << "keyword 'mode' = " << mode << ": unknown mapping mode (plan,"
+            << " or axis, the default without 'mode')" << nl
+            << "Nothing written." << nl << exit(FatalIOError);
+    }
+    if (mode == "plan" && tp.getOrDefault<word>("coordinates", "") != "plan")
+    {
+        FatalIOErrorInFunction(tp)
+            << "keyword 'coordinates': " << mapDict.name()
+            << " is of the plan mode, so 'coordinates plan;' is expected"
+            << " here (terrainToCase writes it; it has "
+            << (tp.found("coordinates") ? "another value" : "none") << ")"
+            << nl << "Nothing written." << nl << exit(FatalIOError);
+    }
+    return mode == "plan";
+}
+
+
+planGrid mappingPlan(const dictionary& mapDict)
+{
+    const vector2D o = mapDict.get<vector2D>("origin");
+    const vector2D ax = mapDict.get<vector2D>("xAxis");
+    const vector2D ay = mapDict.get<vector2D>("yAxis");
+    planGrid g;
+    g.origin = {o.x(), o.y()};
+    g.xAxis = {ax.x(), ax.y()};
+    g.yAxis = {ay.x(), ay.y()};
+    g.cellSize = mapDict.get<scalar>("cellSize");
+    g.nx = mapDict.get<label>("nx");
+    g.ny = mapDict.get<label>("ny");
+    const scalar cross = ax.x()*ay.y() - ax.y()*ay.x();
+    if
+    (
+        !(g.cellSize > 0) || g.nx < 1 || g.ny < 1
+     || !(mag(mag(ax) - 1) < 1e-9) || !(mag(cross - 1) < 1e-9)
+    )
+    {
+        FatalIOErrorInFunction(mapDict)
+            << "keywords 'xAxis', 'yAxis', 'cellSize', 'nx', 'ny': not a plan"
+            << " grid (unit xAxis, yAxis it turned by +90 deg, cellSize > 0,"
+            << " nx, ny >= 1)" << nl << "Nothing written." << nl
+            << exit(FatalIOError);
+    }
+    return g;
 }
 
 } // End namespace Foam

@@ -4,7 +4,7 @@
 
 #include "planGrid.H"
 #include "terrainInput.H"
-#include "bedElevation.H"
+#include "zbGradient.H"
 #include "vector2D.H"
 #include "unitConversion.H"
 

@@ -1,0 +1,319 @@
+/*---------------------------------------------------------------------------*\
+  savageHutterFoam: Savage-Hutter granular avalanche solver
+\*---------------------------------------------------------------------------*/
+
+#include "planReport.H"
+#include "runoutReport.H"
+#include "zbGradient.H"
+#include "OFstream.H"
+#include "unitConversion.H"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace Foam
+{
+
+namespace
+{
+
+//- J = sqrt(1 + |grad zb|^2) per mesh cell, the gradient on the plan grid
+scalarField bedMetric
+(
+    const fvMesh& mesh, const hazardTerrain& t, const volScalarField& zb
+)
+{
+    const labelList cellOf = gridCells(mesh, t);
+    scalarField zg(cellOf.size(), 0);
+    forAll(cellOf, k)
+    {
+        zg[k] = zb[cellOf[k]];
+    }
+    scalarField J(mesh.nCells(), 1);
+    for (label j = 0; j < t.ny; ++j)
+    {
+        for (label i = 0; i < t.nx; ++i)
+        {
+            const vector2D G = zbGradient(zg, t.nx, t.ny, t.cellSize, i, j);
+            J[cellOf[i + t.nx*j]] = std::sqrt(1 + G.x()*G.x() + G.y()*G.y());
+        }
+    }
+    return J;
+}
+
+
+//- The world bed point (X, Y, zb) of a cell centre C
+terrain::vec3 bedPoint(const planGrid& g, const point& C, scalar zb)
+{
+    const std::array<double, 2> W = g.world(C.x(), C.y());
+    return {W[0], W[1], zb};
+}
+
+
+//- The volume sum J h A and its centre (at the bed points)
+struct massCentre
+{
+    scalar volume = 0;
+    terrain::vec3 W{0, 0, 0};
+};
+
+massCentre centreOf
+(
+    const hazardTerrain& t, const scalarField& J, const volScalarField& h,
+    const volScalarField& zb
+)
+{
+    const volVectorField& C = h.mesh().C();
+    const scalar A = t.cellSize*t.cellSize;
+    massCentre m;
+    forAll(C, c)
+    {
+        const scalar v = J[c]*h[c]*A;
+        const terrain::vec3 P = bedPoint(t.grid, C[c], zb[c]);
+        m.volume += v;
+        for (int k = 0; k < 3; ++k)
+        {
+            m.W[k] += v*P[k];
+        }
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+        m.W[k] = m.volume > 0 ? m.W[k]/m.volume : 0;
+    }
+    return m;
+}
+
+
+fileName comFile(const fvMesh& mesh)
+{
+    return mesh.time().path()/"postProcessing"/"centreOfMass.dat";
+}
+
+
+//- Whether time a is not after time b (to round-off of the names)
+bool notAfter(scalar a, scalar b)
+{
+    return a <= b + 1e-12*max(scalar(1), mag(b));
+}
+
+
+//- The points of postProcessing/centreOfMass.dat: (time, x, y, z)
+typedef std::array<double, 4> comSample;
+
+std::vector<comSample> readComFile(const fileName& file)
+{
+    std::ifstream is(file);
+    std::vector<comSample> s;
+    std::string line;
+    for (label n = 1; std::getline(is, line); ++n)
+    {
+        const std::size_t first = line.find_first_not_of(" \t\r");
+        if (first == std::string::npos || line[first] == '#')
+        {
+            continue;
+        }
+        std::istringstream ls(line);
+        comSample p;
+        const bool read = bool(ls >> p[0] >> p[1] >> p[2] >> p[3]);
+        if
+        (
+            !read || !std::isfinite(p[0]) || !std::isfinite(p[1])
+         || !std::isfinite(p[2]) || !std::isfinite(p[3])
+         || (!s.empty() && !(p[0] > s.back()[0]))
+        )
+        {
+            FatalErrorInFunction
+                << file << " line " << n << ": " << line << " is not"
+                << " 'time x y z' (finite numbers, times increasing)" << nl
+                << "Nothing written." << nl << exit(FatalError);
+        }
+        s.push_back(p);
+    }
+    if (s.empty())
+    {
+        FatalErrorInFunction
+            << file << ": no line 'time x y z'" << nl
+            << "Nothing written." << nl << exit(FatalError);
+    }
+    return s;
+}
+
+
+//- The centre of mass' path up to time now and where it comes from
+struct comPath
+{
+    std::vector<terrain::vec3> points;
+    std::string from;
+};
+
+comPath comPathOf
+(
+    const hazardTerrain& t, const hazardTimes& times, const instant& now,
+    const scalarField& J, const volScalarField& zb
+)
+{
+    const fvMesh& mesh = zb.mesh();
+    comPath path;
+    if (isFile(comFile(mesh)))
+    {
+        for (const comSample& p : readComFile(comFile(mesh)))
+        {
+            if (notAfter(p[0], now.value()))
+            {
+                path.points.push_back({p[1], p[2], p[3]});
+            }
+        }
+        path.from = "postProcessing/centreOfMass.dat";
+        return path;
+    }
+    for (const instant& ti : times.numeric)
+    {
+        if (notAfter(ti.value(), now.value()))
+        {
+            const volScalarField h(fieldIO(mesh, ti.name(), "h"), mesh);
+            const massCentre m = centreOf(t, J, h, zb);
+            if (m.volume > 0)
+            {
+                path.points.push_back(m.W);
+            }
+        }
+    }
+    path.from = "the time directories";
+    return path;
+}
+
+
+//- The horizontal length of a polyline
+scalar pathLength(const std::vector<terrain::vec3>& p)
+{
+    scalar s = 0;
+    for (std::size_t k = 1; k < p.size(); ++k)
+    {
+        s += std::hypot(p[k][0] - p[k-1][0], p[k][1] - p[k-1][1]);
+    }
+    return s;
+}
+
+
+//- The highest released point and the runout point: the bed point of the
+//  cell with hMax > threshold horizontally furthest from it
+struct planRunout
+{
+    terrain::vec3 top{0, 0, -GREAT};
+    terrain::vec3 point{0, 0, 0};
+};
+
+planRunout runoutOf
+(
+    scalar threshold, const hazardTerrain& t, const volScalarField& h0,
+    const hazardFields& fields
+)
+{
+    const volVectorField& C = h0.mesh().C();
+    const volScalarField& zb = fields.zb;
+    planRunout r;
+    forAll(C, c)
+    {
+        if (h0[c] > 0 && zb[c] > r.top[2])
+        {
+            r.top = bedPoint(t.grid, C[c], zb[c]);
+        }
+    }
+    scalar furthest = -1;
+    forAll(C, c)
+    {
+        const terrain::vec3 P = bedPoint(t.grid, C[c], zb[c]);
+        const scalar d = std::hypot(P[0] - r.top[0], P[1] - r.top[1]);
+        if (fields.hMax[c] > threshold && d > furthest)
+        {
+            furthest = d;
+            r.point = P;
+        }
+    }
+    return r;
+}
+
+} // End anonymous namespace
+
+
+void checkComPath(const fvMesh& mesh, const hazardTimes& times)
+{
+    const instant& last = times.chosen.last();
+    if (isFile(comFile(mesh)))
+    {
+        const scalar start = readComFile(comFile(mesh)).front()[0];
+        if (!notAfter(start, times.chosen.first().value()))
+        {
+            FatalErrorInFunction
+                << comFile(mesh) << " starts at time " << start
+                << ", after the chosen time " << times.chosen.first().name()
+                << ": no centre of mass' path up to it" << nl
+                << "Nothing written." << nl << exit(FatalError);
+        }
+        return;
+    }
+    for (const instant& ti : times.numeric)
+    {
+        if
+        (
+            notAfter(ti.value(), last.value())
+         && !hasField(mesh, ti.name(), "h")
+        )
+        {
+            FatalErrorInFunction
+                << "No field h in " << mesh.time().path()/ti.name()
+                << ": the centre of mass' path (comPathLength,"
+                << " comTravelAngle) needs h at every time directory up to "
+                << last.name() << ", or " << comFile(mesh) << nl
+                << "Nothing written." << nl << exit(FatalError);
+        }
+    }
+}
+
+
+void writePlanReport
+(
+    const fileName& outDir, const instant& now, scalar threshold,
+    const hazardTerrain& mapping, const hazardTimes& times,
+    const volScalarField& h0, const hazardFields& fields
+)
+{
+    const scalarField J = bedMetric(h0.mesh(), mapping, fields.zb);
+    const scalar released = centreOf(mapping, J, h0, fields.zb).volume;
+    const scalar deposit = centreOf(mapping, J, fields.h, fields.zb).volume;
+    const planRunout r = runoutOf(threshold, mapping, h0, fields);
+    const comPath path = comPathOf(mapping, times, now, J, fields.zb);
+    const scalar s = pathLength(path.points);
+    const std::vector<terrain::vec3>& P = path.points;
+    const scalar dz = P.empty() ? 0 : P.front()[2] - P.back()[2];
+    const scalar comAngle = radToDeg(std::atan2(dz, s));
+    const scalar alpha = travelAngle(r.top, r.point);
+
+    OFstream report(outDir/"report.dat");
+    report.precision(15);
+    report
+        << "# hazardMaps: time " << now.name() << ", threshold "
+        << threshold << " m on hMax; plan mode: volumes sum J h A,"
+        << " J = sqrt(1 + |grad zb|^2)" << nl
+        << "releasedVolume " << released << nl
+        << "depositVolume " << deposit << nl
+        << "runoutX " << r.point[0] << nl
+        << "runoutY " << r.point[1] << nl
+        << "runoutZ " << r.point[2] << nl
+        << "travelAngle " << alpha << nl
+        << "comTravelAngle " << comAngle << nl
+        << "outflowVolume " << released - deposit << nl
+        << "comPathLength " << s << nl;
+    Info<< "    Released volume " << released << " m^3, at time "
+        << now.name() << " " << deposit << " m^3 in the domain, "
+        << released - deposit << " m^3 left it" << nl
+        << "    Runout point (" << r.point[0] << " " << r.point[1] << " "
+        << r.point[2] << "), travel angle " << alpha << " deg" << nl
+        << "    Centre of mass: path of " << path.points.size()
+        << " points from " << path.from << ", length " << s
+        << " m, drop " << dz << " m, travel angle " << comAngle << " deg"
+        << nl << "    Wrote " << outDir << nl << endl;
+}
+
+} // End namespace Foam
