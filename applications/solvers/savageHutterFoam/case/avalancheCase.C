@@ -310,13 +310,23 @@ void avalancheCase::restoreStartTime()
 }
 
 
-scalar avalancheCase::nextWriteTime(const scalar t, const scalar anchor) const
+scalar avalancheCase::writeOrigin(const scalar t0) const
+{
+    const scalar w = input.writeInterval;
+    return mag(t0/w - std::round(t0/w)) < 1e-6 ? 0 : t0;
+}
+
+
+scalar avalancheCase::nextWriteTime
+(
+    const scalar t, const scalar anchor, const scalar endTime
+) const
 {
     const scalar w = input.writeInterval;
     const scalar k = std::floor((t - anchor)/w + 1e-6) + 1;
     char buf[32];
     snprintf(buf, sizeof(buf), "%.12g", anchor + k*w);
-    return std::strtod(buf, nullptr);
+    return min(scalar(std::strtod(buf, nullptr)), endTime);
 }
 
 

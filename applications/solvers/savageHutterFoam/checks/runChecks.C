@@ -91,7 +91,7 @@ void avalancheRun<Real>::checkFirstStep()
     const bool onGrid =
         writeControl == "adjustableRunTime" || writeControl == "runTime";
     const double firstWrite =
-        onGrid ? double(ac_.nextWriteTime(t0_, origin_)) : endTime_;
+        onGrid ? double(ac_.nextWriteTime(t0_, origin_, endTime_)) : endTime_;
     const std::string controls = stepsProblem
     (
         t0_, endTime_, writeControl, ac_.input.writeInterval, firstWrite

@@ -101,7 +101,7 @@ void avalancheRun<Real>::readWriteGrid()
     // signal keeps its grid; else from 0 when the start time lies on that
     // grid, else from the start time, as in OpenFOAM
     const scalar w = ac_.input.writeInterval;
-    origin_ = mag(t0_/w - std::round(t0_/w)) < 1e-6 ? 0 : t0_;
+    origin_ = ac_.writeOrigin(t0_);
     for (const word& key : writeGrid_.toc())
     {
         if (key != "origin")
@@ -126,7 +126,7 @@ void avalancheRun<Real>::readWriteGrid()
                 << "Valid values: a time in [" << t0_ - maxStepsToEnd()*w
                 << ", " << t0_ << "]; or remove " << writeGrid_.objectPath()
                 << " (the write times are then counted from "
-                << (mag(t0_/w - std::round(t0_/w)) < 1e-6 ? 0 : t0_) << ")"
+                << ac_.writeOrigin(t0_) << ")"
                 << nl << exit(FatalIOError);
         }
         Info<< "Write times on the grid of the run that wrote "
@@ -195,12 +195,9 @@ bool avalancheRun<Real>::advance()
     {
         if (!(nextWrite_ > solver.time()))
         {
-            nextWrite_ = ac_.nextWriteTime(solver.time(), origin_);
+            nextWrite_ = ac_.nextWriteTime(solver.time(), origin_, endTime_);
         }
-        due = solver.advance
-        (
-            min(nextWrite_, endTime_), max(min(toLog, toCheck), 0.0)
-        );
+        due = solver.advance(nextWrite_, max(min(toLog, toCheck), 0.0));
         logIfDue();
     }
     return due;

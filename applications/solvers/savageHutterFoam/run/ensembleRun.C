@@ -757,8 +757,8 @@ void ensembleRun<Real>::run()
     using clock = std::chrono::steady_clock;
     const clock::time_point start = clock::now();
     const scalar endTime = runTime_.endTime().value();
-    const scalar wi = ac_.input.writeInterval;
     scalar t = solver_->time(0);
+    const scalar origin = ac_.writeOrigin(t);
     if (!restarted_)
     {
         // A fresh start: the initial states too
@@ -769,13 +769,8 @@ void ensembleRun<Real>::run()
     double stepping = 0;
     while (t < endTime)
     {
-        // The next write time: the next multiple of writeInterval, on the
-        // grid of a single run (anchored at 0)
-        scalar next = ac_.nextWriteTime(t, 0);
-        if (next > endTime || mag(next - endTime) < 1e-12*wi)
-        {
-            next = endTime;
-        }
+        // The next write time, on the grid of a single run
+        const scalar next = ac_.nextWriteTime(t, origin, endTime);
         const clock::time_point t0 = clock::now();
         bool reached = false;
         while (!reached)
