@@ -1,0 +1,332 @@
+/*---------------------------------------------------------------------------*\
+  savageHutterFoam: Savage-Hutter granular avalanche solver
+
+Description
+    What an ensemble run writes besides its members' fields (ensembleRun):
+    the statistics over the members (peaks, exceedance probabilities, the
+    summary) and ensemble/report.dat.
+\*---------------------------------------------------------------------------*/
+
+#include "ensembleRun.H"
+#include "OFstream.H"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace Foam
+{
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+template<class Real>
+void ensembleRun<Real>::peakValues
+(
+    std::vector<double>& hv,
+    std::vector<double>& uv,
+    std::vector<double>& pv
+) const
+{
+    const label nc = ac_.h.size();
+    const bool pressure = ac_.pMax.valid();
+    hv.assign(std::size_t(nc)*n_, 0);
+    uv.assign(hv.size(), 0);
+    pv.assign(pressure ? hv.size() : 0, 0);
+    for (label k = 0; k < n_; ++k)
+    {
+        const sh::PeakMaps<Real> p = solver_->peakMaps(k);
+        forAll(ac_.h, c)
+        {
+            const label i = ac_.smesh.gridIndex(c);
+            const std::size_t at = std::size_t(c)*n_ + k;
+            hv[at] = double(p.h[i]);
+            uv[at] = double(p.speed[i]);
+            if (pressure)
+            {
+                pv[at] = double(p.pressure[i]);
+            }
+        }
+    }
+}
+
+
+namespace
+{
+
+//- A statistic's field name: prefix and x as "%g"
+word named(const char* prefix, const scalar x)
+{
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%s%g", prefix, x);
+    return word(buf);
+}
+
+} // namespace
+
+
+template<class Real>
+label ensembleRun<Real>::addField
+(
+    PtrList<volScalarField>& fields,
+    const word& name,
+    const dimensionSet& dims
+) const
+{
+    fields.append
+    (
+        new volScalarField
+        (
+            IOobject
+            (
+                name, runTime_.timeName(), ac_.mesh,
+                IOobject::NO_READ, IOobject::AUTO_WRITE
+            ),
+            ac_.mesh,
+            dimensionedScalar(name, dims, 0),
+            "zeroGradient"
+        )
+    );
+    return fields.size() - 1;
+}
+
+
+template<class Real>
+void ensembleRun<Real>::addExceedances
+(
+    PtrList<volScalarField>& fields,
+    const std::vector<double>& hv
+) const
+{
+    const label nc = ac_.h.size();
+    forAll(ens_.thresholds, q)
+    {
+        const scalar thr = ens_.thresholds[q];
+        const label f = addField(fields, named("hMaxExceedance_", thr), dimless);
+        for (label c = 0; c < nc; ++c)
+        {
+            label above = 0;
+            for (label k = 0; k < n_; ++k)
+            {
+                above += hv[std::size_t(c)*n_ + k] > thr;
+            }
+            fields[f][c] = scalar(above)/n_;
+        }
+    }
+}
+
+
+template<class Real>
+void ensembleRun<Real>::addSummary
+(
+    PtrList<volScalarField>& fields,
+    const std::vector<double>& all,
+    const word& name,
+    const dimensionSet& dims
+) const
+{
+    const label nc = ac_.h.size();
+    std::vector<double> v(n_);
+    const label mean = addField(fields, name + "Mean", dims);
+    List<label> pct(ens_.percentiles.size());
+    forAll(pct, q)
+    {
+        pct[q] = addField(fields, named((name + "P").c_str(), ens_.percentiles[q]), dims);
+    }
+    for (label c = 0; c < nc; ++c)
+    {
+        double sum = 0;
+        for (label k = 0; k < n_; ++k)
+        {
+            v[k] = all[std::size_t(c)*n_ + k];
+            sum += v[k];
+        }
+        fields[mean][c] = sum/n_;
+        std::sort(v.begin(), v.end());
+        forAll(pct, q)
+        {
+            const double r = ens_.percentiles[q]/100*(n_ - 1);
+            const label lo = std::min(label(std::floor(r)), n_ - 1);
+            const label hi = std::min(lo + 1, n_ - 1);
+            fields[pct[q]][c] = v[lo] + (r - lo)*(v[hi] - v[lo]);
+        }
+    }
+}
+
+
+template<class Real>
+void ensembleRun<Real>::writeStatistics()
+{
+    // Per cell the members' values (member fastest)
+    std::vector<double> hv, uv, pv;
+    peakValues(hv, uv, pv);
+
+    PtrList<volScalarField> fields;
+    addExceedances(fields, hv);
+    addSummary(fields, hv, "hMax", dimLength);
+    addSummary(fields, uv, "UMax", dimVelocity);
+    if (ac_.pMax.valid())
+    {
+        addSummary(fields, pv, "pMax", dimPressure);
+    }
+    for (volScalarField& f : fields)
+    {
+        f.correctBoundaryConditions();
+    }
+
+    // Only these: the case's own fields are left out of this write
+    List<regIOobject*> quiet
+    ({
+        &ac_.h, &ac_.U, &ac_.hU, &ac_.regime, &ac_.hMax, &ac_.UMax,
+        &ac_.tArrival
+    });
+    if (ac_.pMax.valid())
+    {
+        quiet.append(ac_.pMax.get());
+    }
+    for (regIOobject* f : quiet)
+    {
+        f->writeOpt() = IOobject::NO_WRITE;
+    }
+    statsWriter_->write();
+    for (regIOobject* f : quiet)
+    {
+        f->writeOpt() = IOobject::AUTO_WRITE;
+    }
+}
+
+
+template<class Real>
+void ensembleRun<Real>::position
+(
+    const sh::Problem<Real>& pb,
+    const label i,
+    const label j,
+    double& E,
+    double& X
+) const
+{
+    const double zeta = double(pb.zeta[i]);
+    const double zb = double(pb.zb[pb.cell(i, j)]);
+    E = E0_[i] + zb*std::cos(zeta);
+    X = X0_[i] - zb*std::sin(zeta);
+}
+
+
+template<class Real>
+void ensembleRun<Real>::surfacePositions(const sh::Problem<Real>& pb)
+{
+    const label nx = pb.grid.nx;
+    const double dx = double(pb.grid.dx);
+    E0_.resize(nx);
+    X0_.resize(nx);
+    double e = 0, x = 0;
+    for (label i = 0; i < nx; ++i)
+    {
+        const double z = double(pb.zeta[i]);
+        E0_[i] = e - 0.5*dx*std::sin(z);
+        X0_[i] = x + 0.5*dx*std::cos(z);
+        e -= dx*std::sin(z);
+        x += dx*std::cos(z);
+    }
+}
+
+
+template<class Real>
+FixedList<double, 3> ensembleRun<Real>::releaseTop(const sh::Problem<Real>& pb) const
+{
+    FixedList<double, 3> top({-1e300, 0, 0});
+    for (label j = 0; j < pb.grid.ny; ++j)
+    {
+        for (label i = 0; i < pb.grid.nx; ++i)
+        {
+            double E, X;
+            position(pb, i, j, E, X);
+            if (double(pb.h[pb.cell(i, j)]) > ens_.runoutThreshold && E > top[0])
+            {
+                top = {E, X, double(pb.grid.yc(j))};
+            }
+        }
+    }
+    return top;
+}
+
+
+template<class Real>
+void ensembleRun<Real>::writeReport()
+{
+    const sh::Problem<Real>& pb0 = problems_[0];
+    const label nx = pb0.grid.nx;
+    const label ny = pb0.grid.ny;
+    const double dx = double(pb0.grid.dx);
+    const double dy = double(pb0.grid.dy);
+    const double thr = ens_.runoutThreshold;
+
+    OFstream os(runTime_.path()/"ensemble"/"report.dat");
+    os.precision(10);
+    os  << "# savageHutterFoam -ensemble: " << n_ << " members, t = "
+        << runTime_.timeName() << nl
+        << "# runout: the cell reached (hMax > " << thr << " m) farthest"
+        << " downslope; travel angle from the highest released cell"
+        << " (h > " << thr << " m at the start) to it [deg]" << nl
+        << "# member";
+    for (const word& k : ens_.keys) { os << ' ' << k; }
+    if (ens_.variesHScale) { os << " hScale"; }
+    if (ens_.variesRelease) { os << " release"; }
+    os  << " releasedVolume volume runoutX runoutY travelAngle steps" << nl;
+    for (label k = 0; k < n_; ++k)
+    {
+        const sh::Problem<Real>& pb = problems_[k];
+        const sh::PeakMaps<Real> p = solver_->peakMaps(k);
+        // Top of the release, runout point
+        const double eTop = top_[k][0];
+        const double xTop = top_[k][1];
+        const double yTop = top_[k][2];
+        double xRun = -1e300, eRun = 0, yRun = 0, xcRun = 0;
+        for (label j = 0; j < ny; ++j)
+        {
+            for (label i = 0; i < nx; ++i)
+            {
+                double E, X;
+                position(pb, i, j, E, X);
+                const label c = pb.cell(i, j);
+                if (double(p.h[c]) > thr && X > xRun)
+                {
+                    xRun = X;
+                    eRun = E;
+                    yRun = double(pb.grid.yc(j));
+                    xcRun = double(pb.grid.xc(i));
+                }
+            }
+        }
+        const bool moved = eTop > -1e300 && xRun > -1e300;
+        const double d = moved
+            ? std::hypot(xRun - xTop, yRun - yTop) : 0;
+        const double angle = moved && d > 0
+            ? std::atan2(eTop - eRun, d)*180/constant::mathematical::pi
+            : 0;
+        std::vector<Real> h, hu, hv;
+        solver_->getState(k, h, hu, hv);
+        double vol = 0;
+        for (const Real hc : h) { vol += double(hc); }
+        vol *= dx*dy;
+
+        os  << k;
+        const ensembleInput::member& m = ens_.members[k];
+        for (const scalar v : m.values) { os << ' ' << v; }
+        if (ens_.variesHScale) { os << ' ' << m.hScale; }
+        if (ens_.variesRelease) { os << ' ' << m.release; }
+        os  << ' ' << released_[k] << ' ' << vol << ' '
+            << (moved ? xcRun : 0) << ' ' << (moved ? yRun : 0) << ' '
+            << angle << ' ' << steps0_[k] + solver_->steps(k) << nl;
+    }
+    Info<< "Wrote " << os.name() << nl;
+}
+
+
+
+// * * * * * * * * * * * * * * Instantiations  * * * * * * * * * * * * * * * //
+
+template class ensembleRun<float>;
+template class ensembleRun<double>;
+
+} // End namespace Foam
