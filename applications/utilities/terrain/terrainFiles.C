@@ -7,6 +7,60 @@
 namespace terrainFiles
 {
 
+namespace
+{
+
+//- Where entry key of a dictionary's text is: the start of its line
+//  (returned; npos when no line starts with it), of the key (first) and
+//  just past its ';' outside parentheses, comments skipped (end)
+std::size_t findEntry
+(
+    const std::string& text, const std::string& key, std::size_t& first,
+    std::size_t& end
+)
+{
+    const std::size_t n = key.size();
+    std::size_t pos = 0;
+    while (pos < text.size())
+    {
+        std::size_t eol = text.find('\n', pos);
+        if (eol == std::string::npos)
+        {
+            eol = text.size();
+        }
+        first = text.find_first_not_of(" \t", pos);
+        if
+        (
+            first < eol && text.compare(first, n, key) == 0
+         && (first + n == text.size()
+          || std::string(" \t(\n").find(text[first + n]) != std::string::npos)
+        )
+        {
+            int depth = 0;
+            std::size_t k = first + n;
+            for (; k < text.size(); ++k)
+            {
+                const char c = text[k];
+                if (c == '/' && k + 1 < text.size() && text[k + 1] == '/')
+                {
+                    k = text.find('\n', k);
+                    if (k == std::string::npos) { k = text.size(); break; }
+                }
+                else if (c == '(') { ++depth; }
+                else if (c == ')') { --depth; }
+                else if (c == ';' && depth <= 0) { break; }
+            }
+            end = k < text.size() ? k + 1 : k;
+            return pos;
+        }
+        pos = eol + 1;
+    }
+    return std::string::npos;
+}
+
+} // End anonymous namespace
+
+
 std::string readText(const std::string& path)
 {
     std::ifstream is(path);
@@ -134,40 +188,10 @@ std::string setInclination
 )
 {
     const std::string entry = inclinationEntry(x, zetaDeg, source);
-    std::size_t pos = 0;
-    while (pos < text.size())
+    std::size_t first = 0, end = 0;
+    if (findEntry(text, "inclination", first, end) != std::string::npos)
     {
-        std::size_t eol = text.find('\n', pos);
-        if (eol == std::string::npos)
-        {
-            eol = text.size();
-        }
-        const std::size_t first = text.find_first_not_of(" \t", pos);
-        if
-        (
-            first < eol && text.compare(first, 11, "inclination") == 0
-         && (first + 11 == text.size()
-          || std::string(" \t(\n").find(text[first + 11]) != std::string::npos)
-        )
-        {
-            int depth = 0;
-            std::size_t k = first + 11;
-            for (; k < text.size(); ++k)
-            {
-                const char c = text[k];
-                if (c == '/' && k + 1 < text.size() && text[k + 1] == '/')
-                {
-                    k = text.find('\n', k);
-                    if (k == std::string::npos) { k = text.size(); break; }
-                }
-                else if (c == '(') { ++depth; }
-                else if (c == ')') { --depth; }
-                else if (c == ';' && depth <= 0) { break; }
-            }
-            std::size_t end = k < text.size() ? k + 1 : k;
-            return text.substr(0, first) + entry + text.substr(end);
-        }
-        pos = eol + 1;
+        return text.substr(0, first) + entry + text.substr(end);
     }
     // No entry: before the closing banner, or at the end
     std::size_t banner = text.rfind("// ****");
@@ -233,57 +257,26 @@ std::size_t entrySpan
     const std::string& text, const std::string& key, std::size_t& end
 )
 {
-    const std::size_t n = key.size();
-    std::size_t pos = 0;
-    while (pos < text.size())
+    std::size_t first = 0;
+    const std::size_t pos = findEntry(text, key, first, end);
+    if (pos != std::string::npos)
     {
-        std::size_t eol = text.find('\n', pos);
-        if (eol == std::string::npos)
+        // The rest of the line: blanks and a comment
+        std::size_t r = text.find_first_not_of(" \t", end);
+        if (r != std::string::npos && text.compare(r, 2, "//") == 0)
         {
-            eol = text.size();
+            r = text.find('\n', r);
         }
-        const std::size_t first = text.find_first_not_of(" \t", pos);
-        if
-        (
-            first < eol && text.compare(first, n, key) == 0
-         && (first + n == text.size()
-          || std::string(" \t(\n").find(text[first + n]) != std::string::npos)
-        )
+        if (r == std::string::npos)
         {
-            int depth = 0;
-            std::size_t k = first + n;
-            for (; k < text.size(); ++k)
-            {
-                const char c = text[k];
-                if (c == '/' && k + 1 < text.size() && text[k + 1] == '/')
-                {
-                    k = text.find('\n', k);
-                    if (k == std::string::npos) { k = text.size(); break; }
-                }
-                else if (c == '(') { ++depth; }
-                else if (c == ')') { --depth; }
-                else if (c == ';' && depth <= 0) { break; }
-            }
-            end = k < text.size() ? k + 1 : k;
-            // The rest of the line: blanks and a comment
-            std::size_t r = text.find_first_not_of(" \t", end);
-            if (r != std::string::npos && text.compare(r, 2, "//") == 0)
-            {
-                r = text.find('\n', r);
-            }
-            if (r == std::string::npos)
-            {
-                end = text.size();
-            }
-            else if (text[r] == '\n')
-            {
-                end = r + 1;
-            }
-            return pos;
+            end = text.size();
         }
-        pos = eol + 1;
+        else if (text[r] == '\n')
+        {
+            end = r + 1;
+        }
     }
-    return std::string::npos;
+    return pos;
 }
 
 
