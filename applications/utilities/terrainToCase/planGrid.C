@@ -51,34 +51,18 @@ struct frameBox
 };
 
 
-//- The plan grid's axes: x along the DEM's columns, y to its left
-//  (+90 deg); the DEM's origin point(0, 0) is the frame's (u, v) = (0, 0)
-struct demFrame
+//- The DEM's own frame as a planGrid without cells: x along the DEM's
+//  columns, y to its left (+90 deg), the origin at the DEM's point(0, 0);
+//  world() and local() map between it and the world
+planGrid demFrame(const terrain::Raster& dem)
 {
-    std::array<double, 2> P0, xAxis, yAxis;
-
-    explicit demFrame(const terrain::Raster& dem)
-    {
-        const double len = std::hypot(dem.gt[1], dem.gt[4]);
-        xAxis = {dem.gt[1]/len, dem.gt[4]/len};
-        yAxis = {-xAxis[1] + 0.0, xAxis[0]};
-        P0 = dem.point(0, 0);
-    }
-
-    std::array<double, 2> frame(double X, double Y) const
-    {
-        const double dX = X - P0[0], dY = Y - P0[1];
-        return {dX*xAxis[0] + dY*xAxis[1], dX*yAxis[0] + dY*yAxis[1]};
-    }
-
-    std::array<double, 2> world(double u, double v) const
-    {
-        return
-        {
-            P0[0] + u*xAxis[0] + v*yAxis[0], P0[1] + u*xAxis[1] + v*yAxis[1]
-        };
-    }
-};
+    planGrid f{};
+    const double len = std::hypot(dem.gt[1], dem.gt[4]);
+    f.xAxis = {dem.gt[1]/len, dem.gt[4]/len};
+    f.yAxis = {-f.xAxis[1] + 0.0, f.xAxis[0]};
+    f.origin = dem.point(0, 0);
+    return f;
+}
 
 
 //- The DEM's outline on the frame's axes, clipped to the optional
@@ -86,7 +70,7 @@ struct demFrame
 //  not two finite corners or lies outside the DEM)
 frameBox gridBox
 (
-    const dictionary& dict, const terrainDem& d, const demFrame& f
+    const dictionary& dict, const terrainDem& d, const planGrid& f
 )
 {
     const terrain::Raster& dem = d.raster;
@@ -95,7 +79,7 @@ frameBox gridBox
     for (const auto& c : corners)
     {
         const std::array<double, 2> P = dem.point(c[0]*dem.nx, c[1]*dem.ny);
-        const std::array<double, 2> uv = f.frame(P[0], P[1]);
+        const std::array<double, 2> uv = f.local(P[0], P[1]);
         demBox.add(uv[0], uv[1]);
     }
 
@@ -121,7 +105,7 @@ frameBox gridBox
                 << "keyword 'extent': corner " << p << " not finite"
                 << nl << exit(FatalIOError);
         }
-        const std::array<double, 2> uv = f.frame(p.x(), p.y());
+        const std::array<double, 2> uv = f.local(p.x(), p.y());
         given.add(uv[0], uv[1]);
     }
     box.u0 = std::max(given.u0, demBox.u0);
@@ -157,7 +141,7 @@ frameBox gridBox
 //  kept
 std::array<label, 4> trimmedCells
 (
-    const terrain::Raster& dem, const demFrame& f, const frameBox& box,
+    const terrain::Raster& dem, const planGrid& f, const frameBox& box,
     double cs, label nx0, label ny0
 )
 {
@@ -252,7 +236,7 @@ planGrid readPlanGrid(const dictionary& dict, const terrainDem& d)
     g.cellSize = readPositive(dict, "cellSize");
     const scalar cs = g.cellSize;
 
-    const demFrame f(dem);
+    const planGrid f = demFrame(dem);
     g.xAxis = f.xAxis;
     g.yAxis = f.yAxis;
     const frameBox box = gridBox(dict, d, f);
