@@ -35,7 +35,7 @@ CpuSolver<Real>::CpuSolver
 :
     geometry_(checkedSubdomain(pb, halo), halo),
     parallel_(parallel),
-    peaks_(pb),
+    peaks_(pb, &geometry_),
     halo_(halo)
 {
     this->time_ = pb.startTime;
@@ -43,6 +43,7 @@ CpuSolver<Real>::CpuSolver
     model_.g = pb.grid;
     model_.bc = pb.bc;
     model_.geo = geometry_.view();
+    model_.plan = geometry_.planView();
 
     const Grid<Real>& g = pb.grid;
     if (halo_)
@@ -54,8 +55,9 @@ CpuSolver<Real>::CpuSolver
     U_.resize(n);
     Uh_.resize(n);
     Unew_.resize(n);
-    Fx_.resize(n, !geometry_.constantBed());
-    Fy_.resize(n, !geometry_.constantBed());
+    const bool plan = pb.params.planTerrain;
+    Fx_.resize(n, !geometry_.constantBed(), plan);
+    Fy_.resize(n, !geometry_.constantBed(), plan);
 
     U_.h = toPadded(g, pb.h);
     U_.hu = toPadded(g, pb.hu);
@@ -111,13 +113,19 @@ Real CpuSolver<Real>::stableDt()
     // active/passive switch (scheme.H switchRate), their velocities
     fillStateGhosts();
     Real rate = inflowWaveRate(model_);
+    const bool plan = model_.p.planTerrain;
 
     #pragma omp parallel for if(parallel_) reduction(max:rate) schedule(static)
     for (int j = 0; j < g.ny; ++j)
     {
         for (int i = 0; i < g.nx; ++i)
         {
-            rate = shMax(rate, cellWaveRate(model_, U, i, j));
+            rate = shMax
+            (
+                rate,
+                plan ? PlanStages::waveRate(model_, U, i, j)
+                  : SlopeStages::waveRate(model_, U, i, j)
+            );
         }
     }
     if (halo_)
@@ -166,13 +174,15 @@ void CpuSolver<Real>::exchangeDrainFactors(Real dt)
 
 
 template<class Real>
+template<class Stages>
 void CpuSolver<Real>::computeFluxes()
 {
+    using Faces = typename Stages::template Faces<Real>;
     const Grid<Real>& g = model_.g;
     const Model<Real>& m = model_;
     const Fields<Real> Uh = Uh_.view();
-    const FaceFields<Real> Fx = Fx_.view();
-    const FaceFields<Real> Fy = Fy_.view();
+    const auto Fx = Fx_.template viewFor<Stages>();
+    const auto Fy = Fy_.template viewFor<Stages>();
     const int nx = g.nx;
     const int ny = g.ny;
 
@@ -192,14 +202,14 @@ void CpuSolver<Real>::computeFluxes()
         const long rows = ny + 1;
         const int ja = -1 + int(rows*t/nt);
         const int jb = -1 + int(rows*(t + 1)/nt);
-        std::vector<CellFaces<Real>> lo(nx + 2), hi(nx + 2);
+        std::vector<Faces> lo(nx + 2), hi(nx + 2);
         // Row j, cells -1..nx of an interior row, 0..nx-1 of a ghost row
-        const auto reconstructRow = [&](int j, std::vector<CellFaces<Real>>& r)
+        const auto reconstructRow = [&](int j, std::vector<Faces>& r)
         {
             const bool inner = j >= 0 && j < ny;
             for (int i = inner ? -1 : 0; i < (inner ? nx + 1 : nx); ++i)
             {
-                r[i + 1] = reconstructCell(m, Uh, i, j);
+                r[i + 1] = Stages::reconstruct(m, Uh, i, j);
             }
         };
         if (ja < jb)
@@ -212,13 +222,19 @@ void CpuSolver<Real>::computeFluxes()
             {
                 for (int i = -1; i < nx; ++i)
                 {
-                    storeFaceFlux(Fx, g.idx(i, j), fluxX(m, lo[i + 1], lo[i + 2]));
+                    Stages::store
+                    (
+                        Fx, g.idx(i, j), Stages::flux(m, lo[i + 1], lo[i + 2], false)
+                    );
                 }
             }
             reconstructRow(j + 1, hi);
             for (int i = 0; i < nx; ++i)
             {
-                storeFaceFlux(Fy, g.idx(i, j), fluxY(m, lo[i + 1], hi[i + 1]));
+                Stages::store
+                (
+                    Fy, g.idx(i, j), Stages::flux(m, lo[i + 1], hi[i + 1], true)
+                );
             }
             std::swap(lo, hi);
         }
@@ -229,13 +245,28 @@ void CpuSolver<Real>::computeFluxes()
 template<class Real>
 void CpuSolver<Real>::advanceStep(Real dt, double tNew)
 {
+    if (model_.p.planTerrain)
+    {
+        stepWith<PlanStages>(dt, tNew);
+    }
+    else
+    {
+        stepWith<SlopeStages>(dt, tNew);
+    }
+}
+
+
+template<class Real>
+template<class Stages>
+void CpuSolver<Real>::stepWith(Real dt, double tNew)
+{
     const Grid<Real>& g = model_.g;
     const Model<Real>& m = model_;
     const Fields<Real> U = U_.view();
     const Fields<Real> Uh = Uh_.view();
     const Fields<Real> Un = Unew_.view();
-    const FaceFields<Real> Fx = Fx_.view();
-    const FaceFields<Real> Fy = Fy_.view();
+    const auto Fx = Fx_.template viewFor<Stages>();
+    const auto Fy = Fy_.template viewFor<Stages>();
     const int nx = g.nx;
     const int ny = g.ny;
 
@@ -246,13 +277,13 @@ void CpuSolver<Real>::advanceStep(Real dt, double tNew)
     {
         for (int i = 0; i < nx; ++i)
         {
-            predictorCell(m, U, Uh, dt, i, j);
+            Stages::predictor(m, U, Uh, dt, i, j);
         }
     }
 
     fillGhostCells(m, Uh, halo_);
 
-    computeFluxes();
+    computeFluxes<Stages>();
 
     if (halo_)
     {
@@ -265,7 +296,7 @@ void CpuSolver<Real>::advanceStep(Real dt, double tNew)
     {
         for (int i = 0; i < nx; ++i)
         {
-            clips += correctorCell(m, U, Uh, Fx, Fy, Un, dt, i, j);
+            clips += Stages::corrector(m, U, Uh, Fx, Fy, Un, dt, i, j);
         }
     }
     speedClips_ += clips;
@@ -285,7 +316,7 @@ void CpuSolver<Real>::advanceStep(Real dt, double tNew)
         for (int i = 0; i < nx; ++i)
         {
             partialWetCell(m, Un, i, j);
-            updatePeaks(m, Un, P, tNew, i, j);
+            Stages::peaks(m, Un, P, tNew, i, j);
             wet += Un.h[g.idx(i, j)] > m.p.hDry ? 1 : 0;
         }
     }

@@ -247,6 +247,17 @@ const std::vector<std::string>& frictionLawNames()
     return n;
 }
 
+const std::vector<std::string>& coordinatesNames()
+{
+    static const std::vector<std::string> n{"slope", "plan"};
+    return n;
+}
+
+Coordinates parseCoordinates(const std::string& name, const std::string& keyword)
+{
+    return parseName<Coordinates>(coordinatesNames(), name, keyword, "coordinates");
+}
+
 Limiter parseLimiter(const std::string& name, const std::string& keyword)
 {
     return parseName<Limiter>(limiterNames(), name, keyword, "limiter");
@@ -275,6 +286,7 @@ FrictionLaw parseFrictionLaw(const std::string& name, const std::string& keyword
 std::string toString(Limiter x) { return limiterNames().at(int(x)); }
 std::string toString(EarthPressureModel x) { return earthPressureNames().at(int(x)); }
 std::string toString(FrictionLaw x) { return frictionLawNames().at(int(x)); }
+std::string toString(Coordinates x) { return coordinatesNames().at(int(x)); }
 
 
 namespace
@@ -473,6 +485,7 @@ Params<Real> makeParams(const ModelInput& in)
     p.cfl = Real(in.cfl);
     p.arrivalThreshold = Real(in.arrivalThreshold);
     p.rho = Real(in.rho);
+    p.planTerrain = in.coordinates == Coordinates::plan;
     return p;
 }
 

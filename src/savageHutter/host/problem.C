@@ -445,6 +445,77 @@ HostGeometry<Real>::HostGeometry(const Problem<Real>& pb, Halo<Real>* halo)
 {
     padColumns(pb, halo);
     padBed(pb, halo);
+    if (pb.params.planTerrain)
+    {
+        planMetrics(pb);
+    }
+}
+
+
+template<class Real>
+void HostGeometry<Real>::planMetrics(const Problem<Real>& pb)
+{
+    for (int i = 0; i < pb.grid.nx; ++i)
+    {
+        if (pb.zeta[i] != Real(0) || pb.kappa[i] != Real(0))
+        {
+            throw InputError
+            (
+                "coordinates",
+                "plan coordinates take the whole relief from zb: the"
+                " inclination must be 0 (zeta = " + numberString(pb.zeta[i])
+              + " rad in column " + std::to_string(i) + ")"
+            );
+        }
+    }
+    const Grid<Real>& g = pb.grid;
+    const int ng = Grid<Real>::ng;
+    const int sy = g.stride();
+    for (std::vector<Real>* a : {&planP, &planQ, &planBxx, &planBxy, &planByy})
+    {
+        a->assign(g.size(), Real(0));
+    }
+    // Sums of mirrored pairs first, so that a transposed or mirrored bed
+    // gives the transposed or mirrored values bit for bit
+    const double rx = 0.5*double(g.rdx), ry = 0.5*double(g.rdy);
+    const double rxx = double(g.rdx)*double(g.rdx);
+    const double ryy = double(g.rdy)*double(g.rdy);
+    const double rxy = rx*ry;
+    for (int j = 1 - ng; j < g.ny + ng - 1; ++j)
+    {
+        for (int i = 1 - ng; i < g.nx + ng - 1; ++i)
+        {
+            const int c = g.idx(i, j);
+            const double z = zb[c];
+            const double w = zb[c - 1], e = zb[c + 1];
+            const double s = zb[c - sy], n = zb[c + sy];
+            planP[c] = Real((e - w)*rx);
+            planQ[c] = Real((n - s)*ry);
+            planBxx[c] = Real(((e + w) - 2*z)*rxx);
+            planByy[c] = Real(((n + s) - 2*z)*ryy);
+            planBxy[c] = Real
+            (
+                ((double(zb[c + 1 + sy]) + double(zb[c - 1 - sy]))
+               - (double(zb[c + 1 - sy]) + double(zb[c - 1 + sy])))*rxy
+            );
+        }
+    }
+    // The outer ghost layer: its inner neighbour's values (no stage reads
+    // the bed's derivatives there)
+    for (int j = -ng; j < g.ny + ng; ++j)
+    {
+        for (int i = -ng; i < g.nx + ng; ++i)
+        {
+            const int ii = std::min(std::max(i, 1 - ng), g.nx + ng - 2);
+            const int jj = std::min(std::max(j, 1 - ng), g.ny + ng - 2);
+            const int c = g.idx(i, j), k = g.idx(ii, jj);
+            planP[c] = planP[k];
+            planQ[c] = planQ[k];
+            planBxx[c] = planBxx[k];
+            planBxy[c] = planBxy[k];
+            planByy[c] = planByy[k];
+        }
+    }
 }
 
 
@@ -643,8 +714,19 @@ bool squaredSpeedPeak
 
 
 template<class Real>
-HostPeaks<Real>::HostPeaks(const Problem<Real>& pb)
+HostPeaks<Real>::HostPeaks
+(
+    const Problem<Real>& pb,
+    const HostGeometry<Real>* geo
+)
 {
+    if (pb.params.planTerrain && !geo)
+    {
+        throw std::invalid_argument
+        (
+            "HostPeaks: plan mode needs the problem's geometry"
+        );
+    }
     const Grid<Real>& g = pb.grid;
     const std::size_t n = std::size_t(pb.nCells());
     const PeakMaps<Real>& in = pb.peaks;
@@ -688,13 +770,25 @@ HostPeaks<Real>::HostPeaks(const Problem<Real>& pb)
     Model<Real> m;
     m.p = pb.params;
     m.g = g;
+    if (geo)
+    {
+        m.geo = geo->view();
+        m.plan = geo->planView();
+    }
     const Fields<Real> U{q[0].data(), q[1].data(), q[2].data()};
     const PeakFields<Real> P = view();
     for (int j = 0; j < g.ny; ++j)
     {
         for (int i = 0; i < g.nx; ++i)
         {
-            updatePeaks(m, U, P, pb.startTime, i, j);
+            if (m.p.planTerrain)
+            {
+                PlanStages::peaks(m, U, P, pb.startTime, i, j);
+            }
+            else
+            {
+                SlopeStages::peaks(m, U, P, pb.startTime, i, j);
+            }
         }
     }
 }
