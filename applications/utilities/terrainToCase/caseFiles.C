@@ -6,6 +6,7 @@
 #include "OSspecific.H"
 
 #include "terrainFiles.H"
+#include "defaultCaseFiles.H"
 
 namespace Foam
 {
@@ -13,20 +14,18 @@ namespace Foam
 namespace
 {
 
-//- The text of constant/transportProperties; FatalIOError when it is not
-//  there (terrainToCase sets its entry `sets` and keeps the rest)
-std::string transportPropertiesText
-(
-    const fileName& tpFile, const dictionary& dict, const char* sets
-)
+//- The text of constant/transportProperties (terrainToCase sets its
+//  entry `sets` and keeps the rest), or, where the case has none, the
+//  commented defaults (defaultCaseFiles.H), announced
+std::string transportPropertiesText(const fileName& tpFile, bool plan)
 {
     if (!isFile(tpFile))
     {
-        FatalIOErrorInFunction(dict)
-            << "constant/transportProperties not found: terrainToCase sets"
-            << " its " << sets << " and keeps the rest (g, phi,"
-            << " frictionModel, ...), which must be there" << nl
-            << exit(FatalIOError);
+        Info<< "Writing constant/transportProperties with the defaults"
+            << " (Coulomb friction, delta 20 deg, phi 35 deg, rho 1500"
+            << " kg/m^3; it was missing): check it before running"
+            << " savageHutterFoam" << nl;
+        return defaultTransportProperties(plan);
     }
     return terrainFiles::readText(tpFile);
 }
@@ -67,8 +66,7 @@ void writeCaseFiles
 )
 {
     const fileName tpFile = runTime.path()/"constant"/"transportProperties";
-    const std::string tpText =
-        transportPropertiesText(tpFile, dict, "'inclination' entry");
+    const std::string tpText = transportPropertiesText(tpFile, false);
 
     terrainFiles::writeBlockMeshDict
     (
@@ -99,6 +97,7 @@ void writeCaseFiles
         runTime.path()/"constant"/"terrainMapping",
         terrainMapping(dem, axis, profile, grid, layer)
     );
+    writeMissingCaseFiles(runTime.path());
 
     Info<< "Wrote system/blockMeshDict, constant/transportProperties"
         << " (inclination), 0/zb, 0/h, 0/U, constant/terrainMapping" << nl
@@ -115,7 +114,7 @@ void writePlanCaseFiles
     bool hadInclination = false;
     const std::string tpText = terrainFiles::setPlanCoordinates
     (
-        transportPropertiesText(tpFile, dict, "'coordinates' entry to plan"),
+        transportPropertiesText(tpFile, true),
         hadInclination
     );
 
@@ -160,6 +159,7 @@ void writePlanCaseFiles
     (
         runTime.path()/"constant"/"terrainMapping", m
     );
+    writeMissingCaseFiles(runTime.path());
 
     Info<< "Wrote system/blockMeshDict, constant/transportProperties"
         << " (coordinates plan), 0/zb, 0/h, 0/U, constant/terrainMapping"

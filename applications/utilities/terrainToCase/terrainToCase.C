@@ -132,6 +132,7 @@ Usage
 #include "releaseThickness.H"
 #include "caseFiles.H"
 #include "planRelease.H"
+#include "defaultCaseFiles.H"
 
 using namespace Foam;
 
@@ -140,15 +141,41 @@ int main(int argc, char *argv[])
 {
     argList::addNote
     (
-        "Make a savageHutterFoam case (mesh, inclination table, zb, h, U)"
-        " from a DEM and release areas in system/terrainDict"
+        "Make a savageHutterFoam case from a DEM and release areas in"
+        " system/terrainDict: blockMeshDict, 0/zb, 0/h, 0/U,"
+        " constant/terrainMapping, the inclination table or coordinates"
+        " plan in constant/transportProperties, and, where the case has"
+        " none, controlDict, fvSchemes, fvSolution and transportProperties"
+        " with defaults.\n"
+        "terrainDict keywords (a commented sample: etc/caseDicts/terrainDict;"
+        " docs/userGuide.md):\n"
+        "  dem               \"<file>.asc|.tif\"  vertical elevation [m]\n"
+        "  cellSize          > 0 [m]  square cells\n"
+        "  extent            ((X0 Y0) (X1 Y1))  plan mode, optional\n"
+        "  axis              ((X0 Y0) (X1 Y1))  axis mode, top to bottom\n"
+        "  halfWidth         > 0 [m]  axis mode\n"
+        "  profileSmoothing  >= 0 [m]  axis mode\n"
+        "  release           { <name> { ... } ... }, each entry with one of\n"
+        "      polygon ((X Y) ...);  file \"<.shp>\";  raster \"<.asc|.tif>\";\n"
+        "      thickness > 0 [m] (not with raster);\n"
+        "      thicknessDirection vertical | normal;"
     );
     argList::addOption("dict", "file", "alternative dictionary");
     argList::noParallel();
     argList::noFunctionObjects();
 
     #include "setRootCase.H"
-    #include "createTime.H"
+
+    // A case of terrainDict and constant/ inputs alone has no controlDict
+    // yet: the Time is made of the default one, written with the case
+    Info<< "Create time\n" << endl;
+    autoPtr<Time> timePtr
+    (
+        isFile(args.path()/"system"/"controlDict")
+      ? new Time(Time::controlDictName, args)
+      : new Time(defaultControlDict(), args.rootPath(), args.caseName())
+    );
+    Time& runTime = timePtr();
 
     const fileName dictFile =
         args.getOrDefault<fileName>("dict", runTime.system()/"terrainDict");

@@ -1,0 +1,171 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# savageHutterFoam: Savage-Hutter granular avalanche solver
+#
+# Description
+#     A case of system/terrainDict and a DEM in constant/ alone, as a new
+#     user makes it: terrainToCase writes system/controlDict, fvSchemes,
+#     fvSolution and a commented constant/transportProperties with
+#     defaults, says so for each, and the case then runs (blockMesh,
+#     savageHutterFoam) to rest.  The DEM (written here: a 30 deg slope
+#     running out onto a flat floor, 240 x 80 m of 2 m pixels, and a
+#     shallow trough across) is taken along an axis (4 m cells).  A second
+#     terrainToCase keeps every file the user has (a marker put into each
+#     survives, nothing "Wrote ... it was missing").  The commented sample
+#     etc/caseDicts/terrainDict, its dem and polygon set for this DEM, makes
+#     a case (the plan mode).  terrainToCase -help names every keyword of
+#     terrainDict and of a release entry.
+#     Prints one line per check and "N passed, M failed, K skipped".
+#
+# Usage
+#     terrainDefaultsTests.sh <project dir> <work dir>
+#------------------------------------------------------------------------------
+project="$1"
+work="$2"
+. "$project/tests/application/testFunctions.sh"
+python=/usr/bin/python3
+
+rm -rf "$work/user" "$work/sample"
+mkdir -p "$work/user/system" "$work/user/constant" \
+    "$work/sample/system" "$work/sample/constant"
+
+$python - "$work/user/constant/dem.asc" <<'PYEOF'
+import math, sys
+nx, ny, d, x0, y0 = 120, 40, 2.0, 1000.0, 5000.0
+t = math.tan(math.radians(30))
+def z(X, Y):
+    # 30 deg for 100 m, rounded into the floor over 40 m, then flat;
+    # a trough 1 m deep at 40 m to either side of Y = 5040
+    s = X - x0
+    if s < 100:
+        zs = -t*s
+    elif s < 140:
+        zs = -t*100 - t*(s - 100) + t*(s - 100)**2/80
+    else:
+        zs = -t*120
+    return 2000 + zs + ((Y - 5040)/40)**2
+with open(sys.argv[1], "w") as o:
+    o.write(f"ncols {nx}\nnrows {ny}\nxllcorner {x0}\nyllcorner {y0}\n"
+            f"cellsize {d}\nNODATA_value -9999\n")
+    for j in range(ny):
+        Y = y0 + (ny - j - 0.5)*d
+        o.write(" ".join("%.17g" % z(x0 + (i + 0.5)*d, Y)
+                         for i in range(nx)) + "\n")
+PYEOF
+cp "$work/user/constant/dem.asc" "$work/sample/constant/"
+
+cat > "$work/user/system/terrainDict" <<'EOF'
+FoamFile { version 2.0; format ascii; class dictionary; object terrainDict; }
+dem             "constant/dem.asc";
+axis            ((1002 5040) (1236 5040));
+halfWidth       30;
+cellSize        4;
+profileSmoothing 8;
+release
+{
+    r1
+    {
+        polygon     ((1010 5032) (1030 5032) (1030 5048) (1010 5048));
+        thickness   1;
+        thicknessDirection normal;
+    }
+}
+EOF
+
+# 1. The defaults written, each announced; the case runs to rest
+u="$work/user"
+if (cd "$u" && terrainToCase > log.terrainToCase 2>&1)
+then
+    for f in system/controlDict system/fvSchemes system/fvSolution
+    do
+        if [ -f "$u/$f" ] && grep -q "^Wrote $f (.*it was missing)" "$u/log.terrainToCase"
+        then
+            pass "defaults: $f written and announced"
+        else
+            fail "defaults: $f not written or not announced (log.terrainToCase)"
+        fi
+    done
+    if grep -q "^Writing constant/transportProperties with the defaults" "$u/log.terrainToCase" \
+        && grep -q "^frictionModel *Coulomb;" "$u/constant/transportProperties" \
+        && grep -q "^inclination *table" "$u/constant/transportProperties"
+    then
+        pass "defaults: constant/transportProperties written (Coulomb), announced, its inclination table set"
+    else
+        fail "defaults: constant/transportProperties not written as the defaults with the inclination table"
+    fi
+    if (cd "$u" && blockMesh > log.blockMesh 2>&1 \
+        && savageHutterFoam > log.savageHutterFoam 2>&1)
+    then
+        if grep -q "steady state reached at t = " "$u/log.savageHutterFoam"
+        then
+            pass "defaults: the case runs to rest ($(grep -o 'steady state reached at t = [0-9.e+-]*' "$u/log.savageHutterFoam" | tail -n1))"
+        else
+            fail "defaults: the run did not end at rest (log.savageHutterFoam)"
+        fi
+    else
+        fail "defaults: blockMesh or savageHutterFoam failed (see $u/log.*)"
+    fi
+else
+    fail "defaults: terrainToCase failed on a case of terrainDict and a DEM (see $u/log.terrainToCase)"
+fi
+
+# 2. A second terrainToCase keeps the user's files
+for f in system/controlDict system/fvSchemes system/fvSolution constant/transportProperties
+do
+    echo "// the user's own: kept" >> "$u/$f"
+done
+if (cd "$u" && terrainToCase > log.terrainToCase2 2>&1)
+then
+    kept=true
+    for f in system/controlDict system/fvSchemes system/fvSolution constant/transportProperties
+    do
+        grep -q "^// the user's own: kept" "$u/$f" || kept=false
+    done
+    if $kept && ! grep -q "it was missing" "$u/log.terrainToCase2"
+    then
+        pass "defaults: a second terrainToCase keeps every file the case has"
+    else
+        fail "defaults: a second terrainToCase overwrote a file or announced a default"
+    fi
+else
+    fail "defaults: the second terrainToCase failed (see $u/log.terrainToCase2)"
+fi
+
+# 3. The sample terrainDict, its dem and polygon set for this DEM
+s="$work/sample"
+$python - "$project/etc/caseDicts/terrainDict" "$s/system/terrainDict" <<'PYEOF'
+import re, sys
+t = open(sys.argv[1]).read()
+t = t.replace('"constant/dem.tif"', '"constant/dem.asc"')
+t, n = re.subn(r"polygon\s+\(\([^;]*\)\);",
+               "polygon     ((1010 5032) (1030 5032) (1030 5048) (1010 5048));",
+               t, count=1)
+assert n == 1
+t = re.sub(r"^cellSize\s+\S+;", "cellSize        4;", t, flags=re.M)
+open(sys.argv[2], "w").write(t)
+PYEOF
+if (cd "$s" && terrainToCase > log.terrainToCase 2>&1) \
+    && grep -q "^coordinates *plan;" "$s/constant/transportProperties" \
+    && [ -f "$s/0/h" ] && [ -f "$s/system/controlDict" ]
+then
+    pass "sample: etc/caseDicts/terrainDict makes a case (plan mode, with the defaults)"
+else
+    fail "sample: etc/caseDicts/terrainDict did not make a case (see $s/log.terrainToCase)"
+fi
+
+# 4. -help names every keyword
+help="$(terrainToCase -help 2>&1)"
+missing=""
+for k in dem cellSize extent axis halfWidth profileSmoothing release \
+    polygon file raster thickness thicknessDirection
+do
+    grep -qw -- "$k" <<< "$help" || missing="$missing $k"
+done
+if [ -z "$missing" ] && grep -q "etc/caseDicts/terrainDict" <<< "$help"
+then
+    pass "terrainToCase -help names every terrainDict keyword and the sample"
+else
+    fail "terrainToCase -help lacks:${missing:- the name of the sample}"
+fi
+
+finish
