@@ -13,7 +13,9 @@
 #     terrainToCase keeps every file the user has (a marker put into each
 #     survives, nothing "Wrote ... it was missing").  The commented sample
 #     etc/caseDicts/terrainDict, its dem and polygon set for this DEM, makes
-#     a case (the plan mode).  terrainToCase -help names every keyword of
+#     a case (the plan mode).  An axis drawn uphill is refused with its
+#     elevations (nothing written); a stretch of the profile that rises is
+#     a warning with figures.  terrainToCase -help names every keyword of
 #     terrainDict and of a release entry.
 #     Prints one line per check and "N passed, M failed, K skipped".
 #
@@ -153,7 +155,55 @@ else
     fail "sample: etc/caseDicts/terrainDict did not make a case (see $s/log.terrainToCase)"
 fi
 
-# 4. -help names every keyword
+# 4. An axis drawn bottom to top is refused with the figures and nothing
+# written; a profile that rises for a stretch (a bump 2 m high on the
+# floor, across the whole DEM) is a warning with where and how much
+for c in uphill bump
+do
+    rm -rf "$work/$c"
+    mkdir -p "$work/$c/system" "$work/$c/constant"
+    cp "$u/system/terrainDict" "$work/$c/system/"
+done
+cp "$u/constant/dem.asc" "$work/uphill/constant/"
+sed -i 's|^axis .*|axis            ((1236 5040) (1002 5040));|' "$work/uphill/system/terrainDict"
+$python - "$u/constant/dem.asc" "$work/bump/constant/dem.asc" <<'PYEOF'
+import math, sys
+lines = open(sys.argv[1]).read().splitlines()
+head, rows = lines[:6], [list(map(float, l.split())) for l in lines[6:]]
+with open(sys.argv[2], "w") as o:
+    o.write("\n".join(head) + "\n")
+    for r in rows:
+        # X = 1000 + (i + 0.5) 2: a cosine bump 2 m high over X in [1180, 1220]
+        o.write(" ".join("%.17g" % (z + (1 + math.cos(math.pi*(1000 + (i + 0.5)*2 - 1200)/20)
+                         if abs(1000 + (i + 0.5)*2 - 1200) < 20 else 0))
+                         for i, z in enumerate(r)) + "\n")
+PYEOF
+if (cd "$work/uphill" && terrainToCase > log.terrainToCase 2>&1)
+then
+    fail "uphill axis: terrainToCase accepted an axis drawn bottom to top"
+elif grep -q "keyword 'axis' runs uphill: the DEM is .* m high at its first point" "$work/uphill/log.terrainToCase" \
+    && grep -q "Give its points top to" "$work/uphill/log.terrainToCase" \
+    && [ ! -e "$work/uphill/0" ] && [ ! -e "$work/uphill/system/controlDict" ]
+then
+    pass "uphill axis: refused, its elevations and the reversed points named, nothing written"
+else
+    fail "uphill axis: refused without the figures or with files written (log.terrainToCase)"
+fi
+if (cd "$work/bump" && terrainToCase > log.terrainToCase 2>&1) \
+    && grep -q "the profile along the axis rises (zeta < 0) at .* down to zeta = -" "$work/bump/log.terrainToCase"
+then
+    pass "counter-slope: a warning with its extent and steepest zeta ($(grep -o 'from [0-9.]* to [0-9.]* m along it' "$work/bump/log.terrainToCase"))"
+else
+    fail "counter-slope: no warning with figures (see $work/bump/log.terrainToCase)"
+fi
+if ! grep -q "rises (zeta < 0)" "$u/log.terrainToCase"
+then
+    pass "counter-slope: no warning on the profile without one"
+else
+    fail "counter-slope: a warning on a profile that never rises"
+fi
+
+# 5. -help names every keyword
 help="$(terrainToCase -help 2>&1)"
 missing=""
 for k in dem cellSize extent axis halfWidth profileSmoothing release \

@@ -117,6 +117,33 @@ std::vector<double> tablePoints
     return xTable;
 }
 
+//- A warning with figures where the fitted profile rises along the axis
+//  (zeta < 0: a counter-slope the flow must climb)
+void reportCounterSlopes(const std::vector<double>& zetaDeg, double dS)
+{
+    label n = 0;
+    double first = -1, last = -1, lowest = 0;
+    for (std::size_t k = 0; k < zetaDeg.size(); ++k)
+    {
+        if (zetaDeg[k] < 0)
+        {
+            ++n;
+            first = first < 0 ? k*dS : first;
+            last = k*dS;
+            lowest = std::min(lowest, zetaDeg[k]);
+        }
+    }
+    if (n > 0)
+    {
+        WarningInFunction
+            << "the profile along the axis rises (zeta < 0) at " << n
+            << " of its " << zetaDeg.size() << " points, from " << first
+            << " to " << last << " m along it in plan, down to zeta = "
+            << lowest << " deg: a counter-slope the flow must climb.  Is"
+            << " the axis on the thalweg, top to bottom?" << nl;
+    }
+}
+
 } // End anonymous namespace
 
 
@@ -129,6 +156,19 @@ thalwegProfile readProfile
         max(label(2), label(std::ceil(2*axis.length/axis.cellSize)) + 1);
     const double dS = axis.length/(nS - 1);
     const std::vector<double> Zraw = sampleAxis(dict, dem, axis, nS, dS);
+    if (Zraw.back() > Zraw.front())
+    {
+        // x runs downslope: the upslope end is a wall, the flow leaves at
+        // the other; an axis drawn bottom to top gives neither
+        FatalIOErrorInFunction(dict)
+            << "keyword 'axis' runs uphill: the DEM is " << Zraw.front()
+            << " m high at its first point " << axis.points[0] << " and "
+            << Zraw.back() << " m at its last " << axis.points[1]
+            << " (a rise of " << Zraw.back() - Zraw.front() << " m over "
+            << axis.length << " m in plan).  Give its points top to"
+            << " bottom: (" << axis.points[1] << " " << axis.points[0]
+            << ")" << nl << exit(FatalIOError);
+    }
 
     thalwegProfile p;
     std::vector<double> slope;
@@ -140,6 +180,7 @@ thalwegProfile readProfile
         p.zetaDeg[k] = radToDeg(std::atan(-slope[k]));
     }
     p.x = tablePoints(p.zetaDeg, dS);
+    reportCounterSlopes(p.zetaDeg, dS);
     p.surface = terrain::referenceSurface
     (
         {axis.P0.x(), axis.P0.y(), p.Z0}, axis.t.x(), axis.t.y(),
