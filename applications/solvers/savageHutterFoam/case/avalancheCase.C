@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "avalancheCase.H"
+#include "physics/planTerrain.H"
 
 namespace Foam
 {
@@ -108,7 +109,20 @@ avalancheCase::avalancheCase(Time& t, const fvMesh& m)
         .typeHeaderOk<volScalarField>(true), "pMax")),
     hasArrival(onAll(hasPeaks
      && io(t, m, "tArrival", IOobject::MUST_READ)
-        .typeHeaderOk<volScalarField>(true), "tArrival"))
+        .typeHeaderOk<volScalarField>(true), "tArrival")),
+    H
+    (
+        input.plan()
+      ? new volScalarField
+        (
+            io(t, m, "H", IOobject::READ_IF_PRESENT), m,
+            dimensionedScalar(dimLength, Zero)
+        )
+      : nullptr
+    ),
+    hasVolume(onAll(input.plan()
+     && io(t, m, "H", IOobject::MUST_READ)
+        .typeHeaderOk<volScalarField>(true), "H"))
 {}
 
 
@@ -148,7 +162,87 @@ void avalancheCase::copyFields(sh::Problem<Real>& pb) const
 
 
 template<class Real>
-sh::Problem<Real> avalancheCase::problem() const
+void avalancheCase::toPlanState(sh::Problem<Real>& pb, sh::Halo<Real>* halo)
+{
+    // The bed's metric as the scheme has it (HostGeometry: centred
+    // differences of the padded zb; InputError naming coordinates where
+    // the inclination is not 0)
+    const sh::HostGeometry<Real> geo(pb, halo);
+    const sh::Grid<Real>& g = pb.grid;
+    planJ.setSize(h.size());
+    planP.setSize(h.size());
+    planQ.setSize(h.size());
+    std::vector<Real> J(h.size());
+    forAll(h, c)
+    {
+        const label k = smesh.gridIndex(c);
+        const int pc = g.idx(int(k % g.nx), int(k/g.nx));
+        const sh::PlanMetric<Real> m = sh::planMetric
+        (
+            geo.planP[pc], geo.planQ[pc], geo.planBxx[pc], geo.planBxy[pc],
+            geo.planByy[pc]
+        );
+        J[c] = m.J;
+        planJ[c] = m.J;
+        planP[c] = m.p;
+        planQ[c] = m.q;
+    }
+
+    // A restart's H and hU continue exactly, unless h or U were edited
+    // after the write (they then disagree, and h and U win)
+    auto differ = [](const scalar a, const scalar b)
+    {
+        return mag(a - b) > 1e-9*(mag(a) + mag(b)) + VSMALL;
+    };
+    label volumeOff = 0, momentumOff = 0;
+    forAll(h, c)
+    {
+        const scalar Hc = hasVolume ? H()[c] : J[c]*h[c];
+        if (h[c] <= input.model.hDry)
+        {
+            continue;
+        }
+        volumeOff += hasVolume && differ(Hc, J[c]*h[c]);
+        momentumOff += hasMomentum
+         && (differ(hU[c].x(), Hc*U[c].x()) || differ(hU[c].y(), Hc*U[c].y()));
+    }
+    reduce(volumeOff, sumOp<label>());
+    reduce(momentumOff, sumOp<label>());
+    if (volumeOff)
+    {
+        WarningInFunction
+            << "H (the volume per plan area) disagrees with J h in "
+            << volumeOff << " cells (h edited after the write?): using J h"
+            << " and J h U" << nl << endl;
+        hasVolume = false;
+        hasMomentum = false;
+    }
+    else if (momentumOff)
+    {
+        WarningInFunction
+            << "hU disagrees with H U in " << momentumOff << " cells (U"
+            << " edited after the write?): using H U" << nl << endl;
+        hasMomentum = false;
+    }
+    else if (hasVolume && hasMomentum)
+    {
+        Info<< "Reading fields H and hU: the volume and momentum per plan"
+            << " area, exact for the restart" << nl;
+    }
+    forAll(h, c)
+    {
+        const label k = smesh.gridIndex(c);
+        // H = J h as the scheme forms it (planVolume)
+        const Real Hc = hasVolume ? Real(H()[c]) : Real(h[c])*J[c];
+        pb.h[k] = Hc;
+        pb.hu[k] = hasMomentum ? Real(hU[c].x()) : Hc*Real(U[c].x());
+        pb.hv[k] = hasMomentum ? Real(hU[c].y()) : Hc*Real(U[c].y());
+    }
+}
+
+
+template<class Real>
+sh::Problem<Real> avalancheCase::problem(sh::Halo<Real>* halo)
 {
     if (sizeof(Real) < sizeof(double))
     {
@@ -183,6 +277,17 @@ sh::Problem<Real> avalancheCase::problem() const
     }
     pb.startTime = runTime.value();
     copyFields(pb);
+    if (input.plan())
+    {
+        try
+        {
+            toPlanState(pb, halo);
+        }
+        catch (const sh::InputError& e)
+        {
+            input.fail(e);
+        }
+    }
     if (hasPressure)
     {
         reportPressureRestart(pb);
@@ -263,6 +368,7 @@ bool avalancheCase::store
         return false;
     }
     const scalar hDry = input.model.hDry;
+    const bool plan = input.plan();
     forAll(h, c)
     {
         const label k = smesh.gridIndex(c);
@@ -271,6 +377,14 @@ bool avalancheCase::store
         h[c] = hc;
         hU[c] = m;
         U[c] = hc > 0 ? m/hc : vector::zero;
+        if (plan)
+        {
+            // hc is H: the normal thickness H/J, the velocity along the
+            // bed with its vertical component
+            H()[c] = hc;
+            h[c] = hc/planJ[c];
+            U[c].z() = planP[c]*U[c].x() + planQ[c]*U[c].y();
+        }
         regime[c] =
             hc <= hDry ? 0 : (m.x() != 0 || m.y() != 0 ? 2 : 1);
         hMax[c] = peaks.h[k];
@@ -291,6 +405,10 @@ bool avalancheCase::store
     if (pMax.valid())
     {
         pMax->correctBoundaryConditions();
+    }
+    if (H.valid())
+    {
+        H->correctBoundaryConditions();
     }
     return true;
 }
@@ -363,7 +481,14 @@ autoPtr<avalancheCase> readCase(Time& runTime, const fvMesh& mesh)
 // * * * * * * * * * * * * * * Instantiations  * * * * * * * * * * * * * * //
 
 #define makeCaseMembers(Real)                                                 \
-    template sh::Problem<Real> avalancheCase::problem<Real>() const;          \
+    template sh::Problem<Real> avalancheCase::problem<Real>                   \
+    (                                                                         \
+        sh::Halo<Real>*                                                       \
+    );                                                                        \
+    template void avalancheCase::toPlanState<Real>                            \
+    (                                                                         \
+        sh::Problem<Real>&, sh::Halo<Real>*                                   \
+    );                                                                        \
     template void avalancheCase::reportPressureRestart<Real>                  \
     (                                                                         \
         const sh::Problem<Real>&                                              \

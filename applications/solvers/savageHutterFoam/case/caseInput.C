@@ -5,6 +5,7 @@
 #include "caseInput.H"
 #include "boundaryConditions.H"
 #include "Switch.H"
+#include "IStringStream.H"
 #include "unitConversion.H"
 
 #include <cstdlib>
@@ -54,8 +55,8 @@ const wordList solverKeywords
 
 const wordList transportKeywords
 ({
-    "g", "epsilon", "lambda", "inclination", "earthPressure", "phi",
-    "frictionModel", "rho", "arrivalThreshold"
+    "g", "coordinates", "epsilon", "lambda", "inclination", "earthPressure",
+    "phi", "frictionModel", "rho", "arrivalThreshold"
 });
 
 //- Calls f with OpenFOAM's fatal errors thrown as exceptions (the throw
@@ -130,6 +131,15 @@ caseInput::caseInput(const fvMesh& mesh)
     model.g = tp.get<scalar>("g");
     model.epsilon = tp.getOrDefault<scalar>("epsilon", 1);
     model.lambda = tp.getOrDefault<scalar>("lambda", 1);
+    // slope (the paper's coordinates along and across an inclined
+    // reference surface) or plan (the DEM's plan grid, the whole relief in
+    // zb: docs/generalTerrain.md)
+    model.coordinates = tp.found("coordinates", keyType::LITERAL)
+      ? sh::parseCoordinates
+        (
+            readChoice(tp, "coordinates", sh::coordinatesNames())
+        )
+      : sh::Coordinates::slope;
     readInclination(tp);
 
     model.earthPressure = sh::parseEarthPressure
@@ -145,6 +155,9 @@ caseInput::caseInput(const fvMesh& mesh)
     Info<< "    g             " << model.g << nl
         << "    epsilon       " << model.epsilon << nl
         << "    lambda        " << model.lambda << nl
+        << "    coordinates   " << sh::toString(model.coordinates).c_str()
+        << (plan() ? " (the DEM's plan grid: h normal to the bed, U the"
+            " velocity along it)" : "") << nl
         << "    inclination   " << inclination->type() << nl
         << "    earthPressure "
         << sh::toString(model.earthPressure).c_str() << nl
@@ -271,6 +284,15 @@ void caseInput::readTimeControl()
 
 void caseInput::readInclination(const dictionary& tp)
 {
+    if (plan() && !tp.found("inclination"))
+    {
+        // The whole relief is zb; an inclination given must be 0
+        // (HostGeometry::planMetrics names coordinates otherwise)
+        IStringStream is("inclination constant 0;");
+        const dictionary zero(is);
+        inclination = Function1<scalar>::New("inclination", zero);
+        return;
+    }
     if (!tp.found("inclination"))
     {
         FatalIOErrorInFunction(tp)

@@ -63,6 +63,7 @@ void avalancheCase::checkStartFiles(const Time& t, const fvMesh& m)
     checkFile<volVectorField>(t, m, "U", true);
     checkFile<volScalarField>(t, m, "zb", false);
     checkFile<volVectorField>(t, m, "hU", false);
+    checkFile<volScalarField>(t, m, "H", false);
     checkFile<volScalarField>(t, m, "hMax", false);
     checkFile<volScalarField>(t, m, "UMax", false);
     checkFile<volScalarField>(t, m, "pMax", false);
@@ -202,7 +203,9 @@ void avalancheCase::checkHazardMaps() const
 
 void avalancheCase::checkMomentum()
 {
-    if (!hasMomentum)
+    // Plan coordinates: hU is H U, compared where H is known
+    // (toPlanState)
+    if (!hasMomentum || input.plan())
     {
         return;
     }
@@ -264,6 +267,13 @@ void avalancheCase::checkCell(const label c) const
             << mesh.C()[c] << ": the thickness must be finite,"
             << " >= 0 and at most 1e30" << nl << exit(FatalIOError);
     }
+    if (hasVolume && !(H()[c] >= 0 && H()[c] <= big))
+    {
+        FatalIOErrorInFunction(H().objectPath())
+            << "H = " << H()[c] << " in cell " << c << " at "
+            << mesh.C()[c] << ": the volume per plan area must be finite,"
+            << " >= 0 and at most 1e30" << nl << exit(FatalIOError);
+    }
     if
     (
         !(
@@ -323,6 +333,10 @@ void avalancheCase::checkInitialFields() const
         (
             hU, hU.dimensions(), dimLength*dimVelocity, "m^2/s"
         );
+    }
+    if (hasVolume)
+    {
+        checkDimensions(H(), H().dimensions(), dimLength, "m");
     }
     if (isFile(hMax.objectPath()))
     {

@@ -22,6 +22,20 @@ void ensembleRun<Real>::checkOptions() const
             << "-ensemble runs serial: not with -parallel" << nl
             << exit(FatalError);
     }
+    if (ac_.input.plan())
+    {
+        // The batched backends (cpuEnsemble, cudaEnsemble) step slope
+        // coordinates only
+        FatalIOErrorInFunction
+        (
+            runTime_.path()/runTime_.constant()/"transportProperties"
+        )
+            << "keyword 'coordinates': -ensemble runs the slope"
+            << " coordinates only; this case has coordinates plan." << nl
+            << "Valid choices with -ensemble: (slope); run the members of a"
+            << " plan-coordinates case one by one" << nl
+            << exit(FatalIOError);
+    }
     if (ac_.input.steadyStateTolerance > 0)
     {
         Info<< "Note: steadyStateTolerance is not applied to an"

@@ -8,6 +8,9 @@
 #include "runSignals.H"
 #include "startUp.H"
 
+#include <fstream>
+#include <sstream>
+
 namespace Foam
 {
 
@@ -24,8 +27,8 @@ avalancheRun<Real>::avalancheRun
     ac_(ac),
     runTime_(ac.runTime),
     logInterval_(logInterval),
-    pb_(ac.problem<Real>()),
     halo_(makeHalo<Real>(ac.smesh)),
+    pb_(ac.problem<Real>(halo_.get())),
     solver_(selectBackend(backend, pb_, halo_.get())),
     t0_(runTime_.value()),
     index0_(runTime_.timeIndex()),
@@ -55,6 +58,8 @@ avalancheRun<Real>::avalancheRun
        /runTime_.timeName()
     ),
     steady_(false),
+    nextCom_(-GREAT),
+    lastCom_(-GREAT),
     stopped_(false),
     stopAtNextWrite_(false),
     controlDictPath_(runTime_.globalPath()/runTime_.system()/"controlDict"),
@@ -87,7 +92,102 @@ avalancheRun<Real>::avalancheRun
     }
 
     solver_->getState(hPrev_, hus_, hvs_);
+    if (ac_.input.plan())
+    {
+        openCentreOfMass();
+        recordCentreOfMass();
+    }
     start_ = lastLog_ = lastWrite_ = lastCheck_ = wallClock::now();
+}
+
+
+// * * * * * * * * * * * * * * * Centre of mass  * * * * * * * * * * * * * //
+
+template<class Real>
+void avalancheRun<Real>::openCentreOfMass()
+{
+    if (!Pstream::master())
+    {
+        return;
+    }
+    // A restart keeps the path before its start time (times strictly
+    // increasing, as hazardMaps reads them)
+    const fileName dir = runTime_.globalPath()/"postProcessing";
+    const fileName file = dir/"centreOfMass.dat";
+    std::vector<std::string> kept;
+    if (isFile(file))
+    {
+        std::ifstream is(file);
+        std::string line;
+        while (std::getline(is, line))
+        {
+            const std::size_t first = line.find_first_not_of(" \t\r");
+            if (first == std::string::npos || line[first] == '#')
+            {
+                continue;
+            }
+            std::istringstream ls(line);
+            double t = 0;
+            if (ls >> t && t < t0_ - 1e-12*max(scalar(1), mag(t0_)))
+            {
+                kept.push_back(line);
+            }
+        }
+    }
+    mkDir(dir);
+    comFile_.reset(new OFstream(file));
+    comFile_->precision(12);
+    *comFile_
+        << "# Centre of mass of the volume J h dA (H dA) at the cells' bed"
+        << " points, the case's plan coordinates (constant/terrainMapping"
+        << " maps x, y to the DEM's)" << nl
+        << "# time [s]  x [m]  y [m]  z [m]  volume [m^3]" << nl;
+    for (const std::string& line : kept)
+    {
+        *comFile_ << line.c_str() << nl;
+    }
+    comFile_->flush();
+}
+
+
+template<class Real>
+scalar avalancheRun<Real>::comInterval() const
+{
+    return ac_.input.writeInterval/comSamples();
+}
+
+
+template<class Real>
+void avalancheRun<Real>::recordCentreOfMass()
+{
+    const double t = solver_->time();
+    if (!(t > lastCom_))
+    {
+        return;
+    }
+    lastCom_ = t;
+    solver_->getState(comH_, comHu_, comHv_);
+    const volVectorField& C = ac_.mesh.C();
+    // sum H, sum H x, sum H y, sum H zb
+    FixedList<scalar, 4> sums(Zero);
+    forAll(C, c)
+    {
+        const scalar H = comH_[ac_.smesh.gridIndex(c)];
+        sums[0] += H;
+        sums[1] += H*C[c].x();
+        sums[2] += H*C[c].y();
+        sums[3] += H*ac_.zb[c];
+    }
+    for (scalar& s : sums)
+    {
+        reduce(s, sumOp<scalar>());
+    }
+    if (comFile_ && sums[0] > 0)
+    {
+        *comFile_ << t << tab << sums[1]/sums[0] << tab << sums[2]/sums[0]
+            << tab << sums[3]/sums[0] << tab
+            << sums[0]*ac_.smesh.dx()*ac_.smesh.dy() << endl;
+    }
 }
 
 
@@ -197,8 +297,36 @@ bool avalancheRun<Real>::advance()
         {
             nextWrite_ = ac_.nextWriteTime(solver.time(), origin_, endTime_);
         }
-        due = solver.advance(nextWrite_, max(min(toLog, toCheck), 0.0));
+        // Plan coordinates: also the centre of mass' samples, on their
+        // grid from the write times' origin (the same steps after a
+        // restart)
+        scalar target = nextWrite_;
+        if (ac_.input.plan())
+        {
+            if (!(nextCom_ > solver.time()))
+            {
+                const scalar dc = comInterval();
+                const scalar k =
+                    std::floor((solver.time() - origin_)/dc + 1e-6) + 1;
+                char buf[32];
+                snprintf(buf, sizeof(buf), "%.12g", origin_ + k*dc);
+                nextCom_ = min(scalar(std::strtod(buf, nullptr)), endTime_);
+            }
+            target = min(target, nextCom_);
+        }
+        const bool reached =
+            solver.advance(target, max(min(toLog, toCheck), 0.0));
+        due = reached && !(solver.time() < nextWrite_);
+        if (reached && ac_.input.plan())
+        {
+            recordCentreOfMass();
+        }
         logIfDue();
+    }
+    if (ac_.input.plan() && writeControl != "adjustableRunTime"
+     && writeControl != "runTime")
+    {
+        recordCentreOfMass();
     }
     return due;
 }
@@ -223,6 +351,10 @@ void avalancheRun<Real>::write()
     runTime_.setDeltaT(solver_->lastDt(), false);
     writer_.write();
     functions_.execute();
+    if (ac_.input.plan())
+    {
+        recordCentreOfMass();
+    }
     written_.append(runTime_.timeName());
     lastWritten_ = solver_->time();
     lastWrite_ = wallClock::now();
@@ -287,14 +419,20 @@ void avalancheRun<Real>::steadyCheck(const double dt)
     const double fraction = ac_.input.kineticEnergyStop;
     if (fraction > 0)
     {
+        // Plan coordinates: H |V|^2/2 per plan area, |V| the 3D speed
+        // (the momentum's vertical component p hu + q hv)
+        const bool plan = ac_.input.plan();
         double energy = 0;
-        for (std::size_t k = 0; k < hs_.size(); ++k)
+        forAll(ac_.h, c)
         {
+            const label k = ac_.smesh.gridIndex(c);
             const double h = hs_[k];
             if (h > hDry)
             {
                 const double hu = hus_[k], hv = hvs_[k];
-                energy += 0.5*(hu*hu + hv*hv)/h;
+                const double hw =
+                    plan ? ac_.planP[c]*hu + ac_.planQ[c]*hv : 0;
+                energy += 0.5*((hu*hu + hv*hv) + hw*hw)/h;
             }
         }
         energy *= ac_.smesh.dx()*ac_.smesh.dy();
