@@ -383,7 +383,10 @@ bool avalancheCase::store
             // bed with its vertical component
             H()[c] = hc;
             h[c] = hc/planJ[c];
-            U[c].z() = planP[c]*U[c].x() + planQ[c]*U[c].y();
+            // (+ 0: a zero as +0, whatever the slopes' signs: OpenFOAM
+            // writes a field of equal values as uniform, with the first
+            // one's sign of zero for all)
+            U[c].z() = (planP[c]*U[c].x() + planQ[c]*U[c].y()) + 0.0;
         }
         regime[c] =
             hc <= hDry ? 0 : (m.x() != 0 || m.y() != 0 ? 2 : 1);
