@@ -3,7 +3,11 @@
 
     Usage: gpuCompare damBreak|collapsingPile|lakeAtRest|inclinedPlane|
                       inflowPlane|granularJet|voellmyPile|openLake|
-                      outflowCorner
+                      outflowCorner|planBumpyDem|planFlatPile
+
+    planBumpyDem and planFlatPile run in plan coordinates (physics/
+    planScheme.H; the CUDA backend's PlanStages kernels), with the same
+    checks as the others.
 
     Runs the case on the CPU backend (OpenMP) and on the CUDA backend, in
     double and in float, and compares the states at several output times.
@@ -488,8 +492,23 @@ int main(int argc, char** argv)
         return run([](auto r) { return shcases::outflowCorner<decltype(r)>(); },
             {0.5, 1, 2}, false, 3);
     }
+    if (which == "planBumpyDem")
+    {
+        std::printf("Plan coordinates: a pile released on a bumpy DEM at 30 deg"
+            " running out onto a flat floor, a pile at rest there, 97x41,"
+            " t = 3 s\n");
+        return run([](auto r) { return shcases::planBumpyDem<decltype(r)>(); },
+            {0.5, 1.5, 3}, false, 3);
+    }
+    if (which == "planFlatPile")
+    {
+        std::printf("Plan coordinates: a pile collapsing on a flat floor"
+            " (constant bed), walls, 64x64, t = 0.6 s\n");
+        return run([](auto r) { return shcases::planFlatPile<decltype(r)>(64); },
+            {0.1, 0.3, 0.6}, true, 0);
+    }
     std::fprintf(stderr, "usage: gpuCompare damBreak|collapsingPile|"
         "lakeAtRest|inclinedPlane|inflowPlane|granularJet|voellmyPile|"
-        "openLake|outflowCorner\n");
+        "openLake|outflowCorner|planBumpyDem|planFlatPile\n");
     return 2;
 }
