@@ -31,6 +31,8 @@
 #     at its last time) the remaining momentum is round-off, and its relative
 #     distances are O(1) whatever the backend.  Prints the cell-update
 #     rates.
+#     Plan coordinates: terrainBend as bin/bundleOpenFOAM prepared it
+#     (fields with H).
 #     -ensemble: the ensemble tutorial on both backends, every file under
 #     ensemble/ byte for byte (in float too, unless approximate).
 #
@@ -107,6 +109,8 @@ compare()
     # pMax where the case has rho (damBreak below)
     local fields="h U hU regime hMax UMax tArrival"
     [ -f "$cpu/$(echo "$times" | head -n1)/pMax" ] && fields="$fields pMax"
+    # H: plan coordinates (the volume per plan area)
+    [ -f "$cpu/$(echo "$times" | head -n1)/H" ] && fields="$fields H"
     for t in $times
     do
         for f in $fields
@@ -231,6 +235,25 @@ prepare granularJet granularJet 256 128 1 0.25 \
     system/fvSolution savageHutter/steadyStateTolerance 0
 compare granularJet double
 compare granularJet single
+
+# Plan coordinates: terrainBend as bin/bundleOpenFOAM prepared it (the
+# couloir bending by 75 deg, 10 m cells, 200 x 250), to t = 60
+if [ -d "$work/bundle/cases/terrainBend" ]
+then
+    mkdir -p "$work/terrainBend"
+    cp -r "$work/bundle/cases/terrainBend" "$work/terrainBend/base"
+    (
+        cd "$work/terrainBend/base" || exit 1
+        setEntry system/controlDict endTime 60
+        setEntry system/controlDict writeInterval 20
+        setEntry system/controlDict writeFormat binary
+    )
+    compare terrainBend double
+    compare terrainBend single
+else
+    echo "FAIL  terrainBend: no bundle/cases/terrainBend (bin/bundleOpenFOAM prepares it)"
+    status=1
+fi
 
 # -ensemble: the ensemble tutorial (12 members: delta x two releases)
 # with -backend cpu and -backend cuda, every file under ensemble/
