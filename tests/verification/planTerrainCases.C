@@ -741,6 +741,161 @@ void inclinedPlaneAsDem(Counter& test)
     std::printf("c  %.1f s wall\n", seconds() - t0);
 }
 
+// ---------------------------------------------------------------------------
+// (d) the parabolic cap on a turned plane
+// ---------------------------------------------------------------------------
+
+//- Moments of a state on the turned plane, in the plane's own
+//  coordinates: xi along the descent (in-plane distance from the
+//  origin), eta across it; weights H dX dY (= h dA in the plane)
+struct CapMoments
+{
+    double volume = 0;
+    double xi = 0, eta = 0;         //!< centre of mass
+    double varXi = 0, varEta = 0;   //!< second central moments
+    double skewEta = 0;             //!< third central moment of eta / sd^3
+};
+
+void planeCoordinates(double X, double Y, double theta, double psi, double& xi, double& eta)
+{
+    xi = (X*std::cos(psi) + Y*std::sin(psi))/std::cos(theta);
+    eta = -X*std::sin(psi) + Y*std::cos(psi);
+}
+
+CapMoments capMoments(const Problem<double>& pb, const std::vector<double>& H, double theta, double psi)
+{
+    CapMoments m;
+    double s[3] = {0, 0, 0};
+    for (int pass = 0; pass < 2; ++pass)
+    {
+        for (int j = 0; j < pb.grid.ny; ++j)
+        {
+            for (int i = 0; i < pb.grid.nx; ++i)
+            {
+                const double w = H[pb.cell(i, j)];
+                double xi, eta;
+                planeCoordinates(pb.grid.xc(i), pb.grid.yc(j), theta, psi, xi, eta);
+                if (pass == 0)
+                {
+                    m.volume += w;
+                    m.xi += w*xi;
+                    m.eta += w*eta;
+                }
+                else
+                {
+                    const double a = xi - m.xi, c = eta - m.eta;
+                    s[0] += w*a*a;
+                    s[1] += w*c*c;
+                    s[2] += w*c*c*c;
+                }
+            }
+        }
+        if (pass == 0)
+        {
+            m.xi /= m.volume;
+            m.eta /= m.volume;
+        }
+    }
+    m.varXi = s[0]/m.volume;
+    m.varEta = s[1]/m.volume;
+    m.skewEta = s[2]/m.volume/std::pow(m.varEta, 1.5);
+    m.volume *= double(pb.grid.dx)*pb.grid.dy;
+    return m;
+}
+
+void capOnTurnedPlane(Counter& test)
+{
+    const double t0 = seconds();
+    const double g = 9.81, theta = 30*deg, psi = 30*deg;
+    const double R0 = 20, h0 = 2, beta = g*std::cos(theta);
+    const double tEnd = 3;
+    // the exact solution at time t: h normal to the bed at (xi, eta)
+    const auto radius = [=](double t) { return std::sqrt(R0*R0 + 2*beta*h0*t*t); };
+    const auto centre = [=](double t) { return 0.5*g*std::sin(theta)*t*t; };
+    const auto exact = [=](double xi, double eta, double t)
+    {
+        const double R = radius(t), a = xi - centre(t);
+        const double r2 = (a*a + eta*eta)/(R*R);
+        return r2 < 1 ? h0*(R0/R)*(R0/R)*(1 - r2) : 0.0;
+    };
+    ModelInput in;
+    in.g = g;
+    in.earthPressure = EarthPressureModel::isotropic;
+    in.phiDeg = 30;
+    in.coulomb.deltaDeg = 0;
+    in.coordinates = Coordinates::plan;
+    const int n = 100;
+    Problem<double> pb(makeParams<double>(in), n, n, -40, 60, -40, 60);
+    pb.setTopography([=](double X, double Y)
+    {
+        return -std::tan(theta)*(X*std::cos(psi) + Y*std::sin(psi));
+    });
+    pb.setState([=](double X, double Y)
+    {
+        double xi, eta;
+        planeCoordinates(X, Y, theta, psi, xi, eta);
+        return Primitive{exact(xi, eta, 0)/std::cos(theta), 0, 0};
+    });
+    CpuSolver<double> s(pb, false);
+    const CapMoments m0 = capMoments(pb, toDouble(pb.h), theta, psi);
+    std::vector<double> H, Hu, Hv;
+    s.advanceTo(0.5*tEnd);
+    s.getState(H, Hu, Hv);
+    const CapMoments mh = capMoments(pb, H, theta, psi);
+    s.advanceTo(tEnd);
+    s.getState(H, Hu, Hv);
+    const CapMoments m1 = capMoments(pb, H, theta, psi);
+    double l1 = 0, l1ex = 0;
+    for (int j = 0; j < n; ++j)
+    {
+        for (int i = 0; i < n; ++i)
+        {
+            double xi, eta;
+            planeCoordinates(pb.grid.xc(i), pb.grid.yc(j), theta, psi, xi, eta);
+            const double ex = exact(xi, eta, tEnd);
+            l1 += std::fabs(H[pb.cell(i, j)]*std::cos(theta) - ex);
+            l1ex += ex;
+        }
+    }
+    l1 /= l1ex;
+    const double travel = m1.xi - m0.xi, travelEx = centre(tEnd);
+    const double accel = 4*(m1.xi - 2*mh.xi + m0.xi)/(tEnd*tEnd);
+    const double accelEx = g*std::sin(theta);
+    // the exact cap's second moments: R^2/6 along and across
+    const double R = radius(tEnd);
+    const double rXi = std::sqrt(6*m1.varXi), rEta = std::sqrt(6*m1.varEta);
+    const double rXi0 = std::sqrt(6*m0.varXi), rEta0 = std::sqrt(6*m0.varEta);
+    std::printf("d  parabolic cap R0 = %.0f m, h0 = %.0f m on a frictionless %.0f deg"
+        " plane turned %.0f deg in plan, isotropic K, %dx%d cells of %.1f m, t ="
+        " %.1f s (%ld steps); volume %.3f -> %.3f m3\n", R0, h0, theta/deg,
+        psi/deg, n, n, double(pb.grid.dx), s.time(), s.steps(), m0.volume, m1.volume);
+    std::printf("d  centre of mass travel along the descent %.4f m, exact %.4f m"
+        " (relative error %.2e, bound 5e-3); acceleration from t = 0, %.2f,"
+        " %.2f s %.5f m/s2, exact g sin(theta) = %.5f m/s2 (relative error"
+        " %.2e, bound 5e-3)\n", travel, travelEx, std::fabs(travel - travelEx)/travelEx,
+        0.5*tEnd, tEnd, accel, accelEx, std::fabs(accel - accelEx)/accelEx);
+    std::printf("d  spreading: sqrt(6 var) along the descent %.4f m, across %.4f m,"
+        " exact R(t) = %.4f m (relative errors %.2e, %.2e, bound 2e-2; at t = 0"
+        " %.4f, %.4f, R0 = %.0f); along/across - 1 = %.2e (bound 1e-2)\n",
+        rXi, rEta, R, std::fabs(rXi - R)/R, std::fabs(rEta - R)/R, rXi0,
+        rEta0, R0, rXi/rEta - 1);
+    std::printf("d  symmetry about the descent: centre of mass across %.3e m"
+        " (|.|/R bound 1e-3), skewness across %.3e (bound 1e-2); L1(h -"
+        " exact)/L1(exact) = %.3e (bound 5e-2); %.1f s wall\n", m1.eta,
+        m1.skewEta, l1, seconds() - t0);
+    test.check(std::fabs(travel - travelEx) < 5e-3*travelEx,
+        "d: cap: centre of mass travel within 0.5 % of g sin(theta) t^2/2");
+    test.check(std::fabs(accel - accelEx) < 5e-3*accelEx,
+        "d: cap: centre of mass acceleration within 0.5 % of g sin(theta)");
+    test.check(std::fabs(rXi - R) < 2e-2*R && std::fabs(rEta - R) < 2e-2*R,
+        "d: cap: spreading along and across within 2 % of the similarity solution's R(t)");
+    test.check(std::fabs(rXi/rEta - 1) < 1e-2,
+        "d: cap: spreading along and across the descent alike within 1 %");
+    test.check(std::fabs(m1.eta) < 1e-3*R && std::fabs(m1.skewEta) < 1e-2,
+        "d: cap: symmetric about the descent (centre of mass, skewness)");
+    test.check(l1 < 5e-2, "d: cap: L1 error of h below 5 % of the similarity solution's");
+}
+
 } // namespace
 
 
@@ -751,6 +906,7 @@ int main()
     energyLine(test);
     restStates(test);
     inclinedPlaneAsDem(test);
+    capOnTurnedPlane(test);
     std::printf("total wall time %.1f s\n", seconds());
     return test.finish();
 }
