@@ -30,14 +30,21 @@
        at 1.25 m) while atan(dz/friction's path) approaches 21.80 deg
     b  rest states on a DEM with a bend (a curved channel), a bowl and a
        kink above a plane turned by 30 deg in plan:
-         (1) frictionless lakes where section 5 says they are exactly
-             balanced: on the plane below the features, with a
-             shoreline and open sides, and over a whole plane of another
-             orientation; the lake in the bowl (not balanced to
-             round-off, section 5) only printed
-         (2) a layer held by friction (delta above the steepest slope)
-             over the whole DEM, inputs perturbed by round-off:
-             momentum exactly 0 and H unchanged bit for bit
+         (1) frictionless lakes where section 5 says they are balanced
+             (planes of any orientation): on the plane below the
+             features, with a shoreline and open sides, and over a whole
+             plane of another orientation, at rest to round-off (the
+             initial state's eps K H/J^2 + b = eta itself holds to
+             round-off only on a sloping plane; bit for bit needs the
+             flat floor of planScheme b); printed only: a lake whose
+             shoreline meets an open side where the edge cell's inner
+             neighbour is dry (the side's linear h is not the lake's:
+             it moves, in slope coordinates alike) and the lake in the
+             bowl (balanced to O(dx^2) only, section 5)
+         (2) a layer held by friction (delta 30 deg above the steepest
+             slope, 27.2 deg) over the whole DEM, inputs perturbed by
+             round-off, both K: momentum exactly 0 and H unchanged bit
+             for bit; with delta 20 deg it must move
     c  section 5.3 (the inclined plane, tests/common/gpuCases.H
        inclinedPlane, 2 x (30 x 14) cells) in slope coordinates and as the
        plan DEM of the same surface: fronts (asserted) and L1 difference
