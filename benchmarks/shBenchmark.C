@@ -436,13 +436,12 @@ std::string planComparison()
     std::snprintf(buf, sizeof buf,
         "\nPlan coordinates against slope coordinates, the wet large mesh "
         "(target: the plan mode's cost per wet cell-step within %.1fx the "
-        "slope mode's, slope rate / plan rate <= %.1f):\n\n", target, target);
-    return buf
-        + std::string("| precision | backend | cells | steps slope / plan "
-          "| slope wet cell updates/s | plan wet cell updates/s "
-          "| slope / plan (plan cost per wet cell-step) | within 1.3x |\n"
-          "|---|---|---:|---:|---:|---:|---:|---|\n")
-        + rows.str();
+        "slope mode's, slope rate / plan rate <= %.1f):\n\n"
+        "| precision | backend | cells | steps slope / plan "
+        "| slope wet cell updates/s | plan wet cell updates/s "
+        "| slope / plan (plan cost per wet cell-step) | within %.1fx |\n"
+        "|---|---|---:|---:|---:|---:|---:|---|\n", target, target, target);
+    return buf + rows.str();
 }
 
 //- Kept in one piece: the whole markdown table, one column after another in
