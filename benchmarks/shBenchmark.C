@@ -9,7 +9,21 @@ Description
         specific times (Table V);
       - a large mesh (k = 144: 4320 x 2016 = 8.7M cells) over a shorter
         time, and the same mesh covered by a flowing layer everywhere
-        ("wet"), so that no cell takes the cheap dry path.
+        ("wet"), so that no cell takes the cheap dry path;
+      - its counterpart in plan coordinates ("plan wet",
+        docs/generalTerrain.md): the 35 deg plane as a DEM,
+        b = -X tan(35 deg) with gentle bumps (so that the bed varies and
+        the plan bed-step arrays are used), on [0, 30 cos(35 deg)] x
+        [-7, 7] with the same cells (30k x 14k, the slope mesh's cells
+        projected), the same layer (thickness 0.5 normal to the bed and
+        the cap, at rest: H = J h), to the same time.  A table after the
+        main one sets its wet cell updates per second against the slope
+        wet mesh's, precision by precision and backend by backend: slope
+        rate / plan rate is the plan mode's cost per wet cell-step
+        relative to the slope mode's (target: within 1.3).  The slope wet
+        mesh follows eq. (35), 35 deg up to x = 17.5 easing to flat; the
+        plan one stays at 35 deg, so the flows differ past x = 17.5, the
+        cost per wet cell-step little.
     Backends: CPU serial, CPU on all cores (OpenMP), CUDA.  After the table,
     the GPU's float rate over its double rate, mesh by mesh (the float
     CUDA backend uses approximate division and square root when built with
@@ -32,7 +46,8 @@ Description
       -largeTime T          end time of the large runs (default 1)
       -precision both|double|float
       -cpuWall S            wall budget of one CPU run on a Table IV mesh
-      -cpuWallLarge S       the same on the large meshes
+      -cpuWallLarge S       the same on the large meshes (plan wet too)
+      -plan 0|1             the plan wet row on the large mesh (default 1)
       -noCpu                GPU only
       -huge K               also the wet mesh K x K x (30 x 14) on the GPU
                             alone (K = 1544: 1.0e9 cells), to t = hugeTime,
@@ -42,7 +57,8 @@ Description
                             budget after the timed run)
       -hugeTime T           end time of the huge run (default 1e-3)
       -profile K            three steps on mesh K, for ncu (no timing)
-      -profileCase wet|dry  the case -profile runs (default wet)
+      -profileCase wet|dry|plan  the case -profile runs (default wet;
+                            plan: the plan wet mesh)
       -out FILE             also write the table (markdown) to FILE
 \*---------------------------------------------------------------------------*/
 
@@ -66,6 +82,10 @@ using namespace sh;
 namespace
 {
 
+//- The problems a row runs: the inclined plane, the same covered by a
+//  flowing layer, and that one in plan coordinates
+enum class Case { dry, wet, planWet };
+
 struct Options
 {
     std::vector<int> meshes{4, 8, 16, 32};
@@ -76,8 +96,9 @@ struct Options
     double cpuWall = 15;
     double cpuWallLarge = 5;
     bool cpu = true;
+    bool plan = true;
     int profile = 0;
-    bool profileWet = true;
+    Case profileCase = Case::wet;
     int huge = 0;
     double hugeTime = 1e-3;
     bool checkInterval = false;     //!< set for the huge run
@@ -108,6 +129,7 @@ const PaperRow* paperRow(int k)
 struct Result
 {
     std::string precision;
+    Case kase = Case::dry;
     std::string mesh;
     long cells = 0;
     std::string backend;
@@ -153,21 +175,76 @@ struct CheckRow
 };
 std::vector<CheckRow> checkRows;
 
+//- The wet layer's thickness at (x, y) along the plane: 0.5 everywhere,
+//  the cap of section 5.3 on top (every cell wet)
+double wetLayer(double x, double y)
+{
+    const double r0 = 1.85;
+    const double r2 = (x - 4)*(x - 4) + y*y;
+    return 0.5 + (r2 < r0*r0 ? std::sqrt(r0*r0 - r2) : 0.0);
+}
+
 template<class Real>
 sh::Problem<Real> wetPlane(int k)
 {
     sh::Problem<Real> pb = shcases::inclinedPlane<Real>(k);
-    // A layer of thickness 0.5 everywhere, the cap on top: every cell wet
     pb.setState([](double x, double y)
     {
-        const double r0 = 1.85;
-        const double r2 = (x - 4)*(x - 4) + y*y;
-        return sh::Primitive
-        {
-            0.5 + (r2 < r0*r0 ? std::sqrt(r0*r0 - r2) : 0.0), 0, 0
-        };
+        return sh::Primitive{wetLayer(x, y), 0, 0};
     });
     return pb;
+}
+
+//- The plan wet plane: inclination, and the bumps' height and wavelength
+//  (their steepest slope 2 pi a/L = 0.16 against tan(35 deg) = 0.70)
+const double planZeta = 35*shcases::deg;
+const double bumpA = 0.05;
+const double bumpL = 2;
+
+//- Its bed b(X, Y) and slopes (p, q) = grad b
+double planWetBed(double X, double Y)
+{
+    const double w = 2*shcases::pi/bumpL;
+    return -X*std::tan(planZeta) + bumpA*std::cos(w*X)*std::cos(w*Y);
+}
+
+void planWetSlopes(double X, double Y, double& p, double& q)
+{
+    const double w = 2*shcases::pi/bumpL;
+    p = -std::tan(planZeta) - bumpA*w*std::sin(w*X)*std::cos(w*Y);
+    q = -bumpA*w*std::cos(w*X)*std::sin(w*Y);
+}
+
+//- The wet mesh in plan coordinates: the slope mesh's cells projected
+//  (30k x 14k on [0, 30 cos zeta] x [-7, 7]), the model of section 5.3
+//  (inclinedPlane's parameters with Params::planTerrain, the one
+//  difference makeParams makes for ModelInput::coordinates plan), the
+//  wet layer at rest normal to the bed, held as H = J h; transmissive
+//  sides as the slope mesh's
+template<class Real>
+sh::Problem<Real> wetPlanPlane(int k)
+{
+    sh::Params<Real> p = shcases::inclinedPlane<Real>(1).params;
+    p.planTerrain = true;
+    const double cosZeta = std::cos(planZeta);
+    sh::Problem<Real> pb(p, 30*k, 14*k, 0, 30*cosZeta, -7, 7);
+    pb.setTopography(planWetBed);
+    pb.setState([=](double X, double Y)
+    {
+        double bx = 0, by = 0;
+        planWetSlopes(X, Y, bx, by);
+        const double J = std::sqrt(1 + bx*bx + by*by);
+        return sh::Primitive{J*wetLayer(X/cosZeta, Y), 0, 0};
+    });
+    return pb;
+}
+
+template<class Real>
+sh::Problem<Real> problemOf(int k, Case c)
+{
+    return c == Case::planWet ? wetPlanPlane<Real>(k)
+         : c == Case::wet ? wetPlane<Real>(k)
+         : shcases::inclinedPlane<Real>(k);
 }
 
 template<class Real>
@@ -199,11 +276,12 @@ Result timeRun
     return r;
 }
 
-std::string meshName(int k, int nx, int ny, bool wet)
+std::string meshName(int k, int nx, int ny, Case c)
 {
     std::ostringstream os;
     os << k << "x" << k << "x(30x14) = " << nx << "x" << ny;
-    if (wet) { os << " wet"; }
+    if (c == Case::wet) { os << " wet"; }
+    if (c == Case::planWet) { os << " plan wet"; }
     return os.str();
 }
 
@@ -211,14 +289,13 @@ std::string meshName(int k, int nx, int ny, bool wet)
 //  wall-budget handling between them; split, the timers and partial-run
 //  state would pass between helpers.
 template<class Real>
-void runMesh(const Options& o, int k, bool large, bool wet, double tLarge)
+void runMesh(const Options& o, int k, bool large, Case c, double tLarge)
 {
     const char* prec = sizeof(Real) == 8 ? "double" : "float";
-    const sh::Problem<Real> pb =
-        wet ? wetPlane<Real>(k) : shcases::inclinedPlane<Real>(k);
+    const sh::Problem<Real> pb = problemOf<Real>(k, c);
     const long cells = long(pb.grid.nx)*pb.grid.ny;
     const double tEnd = large ? tLarge : 24;
-    const std::string mesh = meshName(k, pb.grid.nx, pb.grid.ny, wet);
+    const std::string mesh = meshName(k, pb.grid.nx, pb.grid.ny, c);
     std::fprintf(stderr, "== %s %s, t = 0..%g\n", prec, mesh.c_str(), tEnd);
 
     std::vector<Result> rows;
@@ -234,7 +311,7 @@ void runMesh(const Options& o, int k, bool large, bool wet, double tLarge)
         {
             memoryRows.push_back
             (
-                {prec, meshName(k, pb.grid.nx, pb.grid.ny, wet), cells,
+                {prec, mesh, cells,
                  double(free0) - double(free1), double(total)}
             );
         }
@@ -309,6 +386,7 @@ void runMesh(const Options& o, int k, bool large, bool wet, double tLarge)
     for (Result& r : rows)
     {
         r.precision = prec;
+        r.kase = c;
         r.mesh = mesh;
         r.serialWall = serial;
         r.serialPartial = serialPartial;
@@ -318,6 +396,52 @@ void runMesh(const Options& o, int k, bool large, bool wet, double tLarge)
             r.partial ? " (partial)" : "");
         results.push_back(r);
     }
+}
+
+//- The plan wet rows against the slope wet rows of the same precision,
+//  backend and cells: slope rate / plan rate, the plan mode's cost per wet
+//  cell-step relative to the slope mode's, against the target 1.3.  A CPU
+//  run stopped by its wall budget gives its rate over the steps it made
+//  (marked '~'; every cell is wet from the first step, so those steps
+//  are representative).  Empty without plan rows.
+std::string planComparison()
+{
+    const double target = 1.3;
+    std::ostringstream rows;
+    char buf[512];
+    for (const Result& p : results)
+    {
+        if (p.kase != Case::planWet) { continue; }
+        for (const Result& s : results)
+        {
+            if
+            (
+                s.kase != Case::wet || s.precision != p.precision
+             || s.backend != p.backend || s.cells != p.cells
+            )
+            {
+                continue;
+            }
+            const double ratio = s.wetRate/p.wetRate;
+            const char* approx = s.partial || p.partial ? "~" : "";
+            std::snprintf(buf, sizeof buf,
+                "| %s | %s | %ld | %ld / %ld | %.3e | %.3e | %s%.3f | %s |\n",
+                p.precision.c_str(), p.backend.c_str(), p.cells, s.steps,
+                p.steps, s.wetRate, p.wetRate, approx, ratio,
+                ratio <= target ? "yes" : "no");
+            rows << buf;
+        }
+    }
+    if (rows.str().empty()) { return ""; }
+    std::snprintf(buf, sizeof buf,
+        "\nPlan coordinates against slope coordinates, the wet large mesh "
+        "(target: the plan mode's cost per wet cell-step within %.1fx the "
+        "slope mode's, slope rate / plan rate <= %.1f):\n\n"
+        "| precision | backend | cells | steps slope / plan "
+        "| slope wet cell updates/s | plan wet cell updates/s "
+        "| slope / plan (plan cost per wet cell-step) | within %.1fx |\n"
+        "|---|---|---:|---:|---:|---:|---:|---|\n", target, target, target);
+    return buf + rows.str();
 }
 
 //- Kept in one piece: the whole markdown table, one column after another in
@@ -430,6 +554,7 @@ std::string table()
               "| float | float / double |\n"
               "|---|---:|---:|---:|---:|\n" << ratios.str();
     }
+    os << planComparison();
     return os.str();
 }
 
@@ -447,10 +572,9 @@ std::vector<int> parseList(const char* s)
 }
 
 template<class Real>
-int profile(int k, bool wet)
+int profile(int k, Case c)
 {
-    const sh::Problem<Real> pb =
-        wet ? wetPlane<Real>(k) : shcases::inclinedPlane<Real>(k);
+    const sh::Problem<Real> pb = problemOf<Real>(k, c);
     std::unique_ptr<Solver<Real>> gpu = makeCudaSolver(pb);
     const Real dt = gpu->stableDt();
     for (int n = 0; n < 3; ++n)
@@ -494,9 +618,12 @@ int main(int argc, char** argv)
         else if (arg == "-huge") { o.huge = std::atoi(need()); }
         else if (arg == "-hugeTime") { o.hugeTime = std::atof(need()); }
         else if (arg == "-out") { o.out = need(); }
+        else if (arg == "-plan") { o.plan = std::atoi(need()) != 0; }
         else if (arg == "-profileCase")
         {
-            o.profileWet = std::string(need()) != "dry";
+            const std::string c = need();
+            o.profileCase = c == "dry" ? Case::dry
+                          : c == "plan" ? Case::planWet : Case::wet;
         }
         else if (arg == "-precision")
         {
@@ -520,8 +647,8 @@ int main(int argc, char** argv)
     if (o.profile > 0)
     {
         return o.dbl
-            ? profile<double>(o.profile, o.profileWet)
-            : profile<float>(o.profile, o.profileWet);
+            ? profile<double>(o.profile, o.profileCase)
+            : profile<float>(o.profile, o.profileCase);
     }
 
     for (const bool dbl : {true, false})
@@ -529,15 +656,16 @@ int main(int argc, char** argv)
         if ((dbl && !o.dbl) || (!dbl && !o.flt)) { continue; }
         for (const int k : o.meshes)
         {
-            dbl ? runMesh<double>(o, k, false, false, 24)
-                : runMesh<float>(o, k, false, false, 24);
+            dbl ? runMesh<double>(o, k, false, Case::dry, 24)
+                : runMesh<float>(o, k, false, Case::dry, 24);
         }
         if (o.large > 0)
         {
-            for (const bool wet : {false, true})
+            for (const Case c : {Case::dry, Case::wet, Case::planWet})
             {
-                dbl ? runMesh<double>(o, o.large, true, wet, o.largeTime)
-                    : runMesh<float>(o, o.large, true, wet, o.largeTime);
+                if (c == Case::planWet && !o.plan) { continue; }
+                dbl ? runMesh<double>(o, o.large, true, c, o.largeTime)
+                    : runMesh<float>(o, o.large, true, c, o.largeTime);
             }
         }
         if (o.huge > 0)
@@ -545,8 +673,8 @@ int main(int argc, char** argv)
             Options gpuOnly = o;
             gpuOnly.cpu = false;
             gpuOnly.checkInterval = true;
-            dbl ? runMesh<double>(gpuOnly, o.huge, true, true, o.hugeTime)
-                : runMesh<float>(gpuOnly, o.huge, true, true, o.hugeTime);
+            dbl ? runMesh<double>(gpuOnly, o.huge, true, Case::wet, o.hugeTime)
+                : runMesh<float>(gpuOnly, o.huge, true, Case::wet, o.hugeTime);
         }
     }
 
