@@ -24,17 +24,11 @@ void ensembleRun<Real>::checkOptions() const
     }
     if (ac_.input.plan())
     {
-        // The batched backends (cpuEnsemble, cudaEnsemble) step slope
-        // coordinates only
-        FatalIOErrorInFunction
-        (
-            runTime_.path()/runTime_.constant()/"transportProperties"
-        )
-            << "keyword 'coordinates': -ensemble runs the slope"
-            << " coordinates only; this case has coordinates plan." << nl
-            << "Valid choices with -ensemble: (slope); run the members of a"
-            << " plan-coordinates case one by one" << nl
-            << exit(FatalIOError);
+        // The CPU backend's members are CpuSolvers, which step plan
+        // coordinates; the batched CUDA backend refuses them
+        // (makeCudaEnsemble: 'use -backend cpu')
+        Info<< "Note: coordinates plan: the members run on the CPU backend"
+            << " only (-backend cpu)" << nl << endl;
     }
     if (ac_.input.steadyStateTolerance > 0)
     {

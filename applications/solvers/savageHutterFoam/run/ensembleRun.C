@@ -83,6 +83,16 @@ scalar ensembleRun<Real>::readMember(const label k, const word& name)
         ac_.pMax->primitiveFieldRef() =
             volScalarField(io("pMax"), mesh).primitiveField();
     }
+    if (ac_.input.plan())
+    {
+        // The volume per plan area and the velocity, as written: the
+        // restart continues exactly (avalancheCase::toPlanState)
+        ac_.H->primitiveFieldRef() =
+            volScalarField(io("H"), mesh).primitiveField();
+        ac_.U.primitiveFieldRef() =
+            volVectorField(io("U"), mesh).primitiveField();
+        ac_.hasVolume = true;
+    }
     ac_.hasMomentum = true;
     ac_.hasPeaks = true;
     ac_.hasArrival = true;
@@ -151,6 +161,16 @@ sh::Problem<Real> ensembleRun<Real>::memberProblem
                     << " has h = " << hr[c] << " in cell " << c
                     << nl << "Valid: 0 <= h < 1e30" << nl
                     << exit(FatalError);
+            }
+            if (ac_.input.plan())
+            {
+                // h normal to the bed: the volume per plan area J h, as
+                // avalancheCase::toPlanState forms it
+                const Real H = Real(hr[c])*Real(ac_.planJ[c]);
+                pb.h[i] = H;
+                pb.hu[i] = H*Real(ac_.U[c].x());
+                pb.hv[i] = H*Real(ac_.U[c].y());
+                continue;
             }
             pb.h[i] = Real(hr[c]);
             pb.hu[i] = Real(hr[c]*ac_.U[c].x());
