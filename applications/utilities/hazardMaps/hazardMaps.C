@@ -116,7 +116,7 @@ int main(int argc, char *argv[])
         {
             const word now = ti.name();
             Info<< "Time " << now << nl;
-            const hazardFields fields(mesh, now, times.first, density.rho);
+            const hazardFields fields(mesh, now, times.first, density);
             const fileName outDir =
                 runTime.path()/"postProcessing"/"hazardMaps"/now;
             writeMaps
