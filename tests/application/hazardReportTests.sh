@@ -185,13 +185,13 @@ for r in rows:
         if line.strip() and not line.startswith("#"):
             k, v = line.split()
             rep[k] = float(v)
-    diffs = {k: abs(float(r[k]) - rep[k]) for k in
+    diffs = {k: abs(float(r.get(k, "nan")) - rep.get(k, float("nan"))) for k in
              ["runoutX", "runoutY", "runoutZ", "travelAngle", "reachesBoundary"]}
-    ok = all(d <= 1e-6 for d in diffs.values()) and rep["runoutX"] > 500
+    ok = all(d <= 1e-6 for d in diffs.values()) and rep.get("runoutX", 0) > 500
     print(("PASS  " if ok else "FAIL  ") + "(d) member %d (delta %s): ensemble runout (%s, %s, %s), "
           "travel angle %s deg; hazardMaps at t = %s (%.10g, %.10g, %.10g), %.10g deg; "
-          "largest difference %.3g" % (m, r["CoulombCoeffs/delta"], r["runoutX"], r["runoutY"],
-          r["runoutZ"], r["travelAngle"], t, rep["runoutX"], rep["runoutY"], rep["runoutZ"],
+          "largest difference %s" % (m, r["CoulombCoeffs/delta"], r["runoutX"], r["runoutY"],
+          r.get("runoutZ"), r["travelAngle"], t, rep["runoutX"], rep["runoutY"], rep["runoutZ"],
           rep["travelAngle"], max(diffs.values())))
 if len(rows) != 2:
     print("FAIL  (d) %d members in ensemble/report.dat, not 2" % len(rows))

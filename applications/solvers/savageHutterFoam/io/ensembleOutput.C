@@ -362,7 +362,7 @@ void ensembleRun<Real>::writeReport()
              : "X horizontal along the unfolded inclination, Y = y,"
                " Z elevation"
            ) << nl
-        << "# units: releasedVolume, volume [m^3]; runoutX, runoutY,"
+        << "# units (the case's; m unless g says otherwise): releasedVolume, volume [m^3]; runoutX, runoutY,"
         << " runoutZ [m]; travelAngle [deg]; reachesBoundary 1 if a cell of"
         << " the mesh's outermost ring has hMax > threshold, else 0" << nl
         << "# member";
