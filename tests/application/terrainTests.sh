@@ -1225,7 +1225,7 @@ r = report(3)
 want = [1152.5, 5157.5, 2000 - 152.5*a35]
 alpha = math.degrees(math.atan(130*a35/math.hypot(130, 135)))
 keys = ["releasedVolume", "depositVolume", "runoutX", "runoutY", "runoutZ", "travelAngle",
-        "comTravelAngle", "outflowVolume", "comPathLength"]
+        "comTravelAngle", "outflowVolume", "comPathLength", "reachesBoundary"]
 ok = sorted(r) == sorted(keys) \
     and all(close(r[k], w) for k, w in zip(["runoutX", "runoutY", "runoutZ"], want)) \
     and close(r["travelAngle"], alpha) and abs(r["outflowVolume"]) < 1e-9*r["releasedVolume"] \

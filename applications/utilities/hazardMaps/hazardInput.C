@@ -13,7 +13,7 @@ namespace
 {
 
 //- Which fields a time directory lacks for the maps ("" if none)
-word missingFields(const fvMesh& mesh, const word& t, const bool hasRho)
+word missingFields(const fvMesh& mesh, const word& t)
 {
     word missing;
     for (const word& name : {"hMax", "UMax", "h"})
@@ -23,10 +23,6 @@ word missingFields(const fvMesh& mesh, const word& t, const bool hasRho)
             missing += " " + name;
         }
     }
-    if (!hasRho && !hasField(mesh, t, "pMax"))
-    {
-        missing += " pMax";
-    }
     return missing;
 }
 
@@ -34,22 +30,13 @@ word missingFields(const fvMesh& mesh, const word& t, const bool hasRho)
 //- FatalError for the fields time t lacks
 void missingFieldsError
 (
-    const fvMesh& mesh, const word& t, const word& missing,
-    const densityInput& density
+    const fvMesh& mesh, const word& t, const word& missing
 )
 {
     FatalErrorInFunction
         << "No field" << missing << " in " << mesh.time().path()/t
-        << " (hMax, UMax and tArrival are written by savageHutterFoam,"
-        << " pMax when constant/transportProperties has rho)" << nl;
-    if (missing.find("pMax") != std::string::npos)
-    {
-        FatalError
-            << "The peak pressure map needs the field pMax or rho [kg/m^3]"
-            << " in " << density.file << " (then pMax = rho UMax^2)"
-            << nl;
-    }
-    FatalError << "Nothing written." << nl << exit(FatalError);
+        << " (h, hMax and UMax are written by savageHutterFoam)" << nl
+        << "Nothing written." << nl << exit(FatalError);
 }
 
 } // End anonymous namespace
@@ -147,8 +134,12 @@ hazardTimes selectTimes
         times.chosen.append(times.numeric.last());
     }
     times.first = times.numeric.first().name();
-    Info<< "Times " << flatOutput(times.chosen) << " (release from time "
-        << times.first << ")" << nl << endl;
+    Info<< (times.chosen.size() == 1 ? "Time" : "Times");
+    for (const instant& ti : times.chosen)
+    {
+        Info<< ' ' << ti.name();
+    }
+    Info<< " (release from time " << times.first << ")" << nl << endl;
     return times;
 }
 
@@ -254,10 +245,10 @@ void checkTimes
     }
     for (const instant& ti : statistics ? instantList() : times.chosen)
     {
-        const word missing = missingFields(mesh, ti.name(), density.hasRho);
+        const word missing = missingFields(mesh, ti.name());
         if (!missing.empty())
         {
-            missingFieldsError(mesh, ti.name(), missing, density);
+            missingFieldsError(mesh, ti.name(), missing);
         }
         const volScalarField hMax(fieldIO(mesh, ti.name(), "hMax"), mesh);
         if (!(gMax(hMax.primitiveField()) > threshold))

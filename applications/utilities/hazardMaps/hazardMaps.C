@@ -13,8 +13,10 @@ Description
     pMax is the solver's field (rho |u|^2 peaked every step; written when
     constant/transportProperties has rho); without it, rho UMax^2 from the
     rho of transportProperties (the same to round-off: the peak of |u|^2
-    is the square of the peak of |u|); with neither, an error.  A run of
-    an older version without tArrival gets no arrival-time map (said so).
+    is the square of the peak of |u|); with neither, no pMax map (the log
+    says "pMax skipped: no rho in ... and no field pMax in <time>"), the
+    others written.  A run of an older version without tArrival gets no
+    arrival-time map (said so).
 
     Writes postProcessing/hazardMaps/<time>/ for each time:
         hMax, UMax, pMax, deposit (h at that time), tArrival
@@ -22,11 +24,14 @@ Description
                         the mesh cell that holds the foot of its normal on
                         the reference surface; nodata (-9999) outside the
                         mesh and where hMax <= threshold (outside the
-                        flow), and in tArrival where the material never
+                        flow), in deposit where h <= threshold (the
+                        deposit masked by itself), in tArrival where the
+                        material never
                         arrived (-1: h never exceeded arrivalThreshold);
                         a rotated DEM's as .tif alone (ESRI ASCII grids are
                         north-up)
-        report.dat      lines "key value":
+        report.dat      lines "key value", each after its comment line
+                        "# key [unit] meaning":
             releasedVolume  sum of h dA at the first time directory [m^3]
             depositVolume   sum of h dA at that time [m^3]
             runoutX/Y/Z     world position of the bed in the cell furthest
@@ -36,8 +41,14 @@ Description
                             highest released point to the runout point
             comTravelAngle  [deg] the same between the centres of mass of
                             the release and of the material at that time
-    Every chosen time is checked (hMax, UMax, h, and pMax or rho) before
-    anything is written.
+            outflowVolume   releasedVolume - depositVolume [m^3]
+            reachesBoundary 1 if a cell of the mesh's outermost ring has
+                            hMax > threshold (the flow reached the domain's
+                            edge; the log warns), else 0
+                            (runoutDefinition.H: shared with the ensemble's
+                            report)
+    Every chosen time is checked (hMax, UMax, h) before anything is
+    written.  bin/plotHazardMaps draws the maps as a PNG.
 
     The plan mode (constant/terrainMapping with mode plan, made by
     terrainToCase without axis; transportProperties with coordinates plan):
@@ -48,9 +59,9 @@ Description
     report (planReport.H) holds the keys above, the volumes sums of J h A
     (J = sqrt(1 + |grad zb|^2)), the runout point the footprint's cell
     horizontally furthest from the highest released point, comTravelAngle
-    measured along the centre of mass' path, and adds outflowVolume and
-    comPathLength.  A mapping of another mode, or a plan mapping without
-    coordinates plan, is an error.
+    measured along the centre of mass' path, and adds comPathLength.  A
+    mapping of another mode, or a plan mapping without coordinates plan,
+    is an error.
 
     -statistics: instead, the statistics of an ensemble (savageHutterFoam
     -ensemble, ensemble/statistics/<time>/: hMaxExceedance_<thr>,
@@ -116,7 +127,7 @@ int main(int argc, char *argv[])
         {
             const word now = ti.name();
             Info<< "Time " << now << nl;
-            const hazardFields fields(mesh, now, times.first, density.rho);
+            const hazardFields fields(mesh, now, times.first, density);
             const fileName outDir =
                 runTime.path()/"postProcessing"/"hazardMaps"/now;
             writeMaps

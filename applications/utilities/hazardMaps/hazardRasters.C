@@ -182,7 +182,8 @@ void writeStatistics
 
 hazardFields::hazardFields
 (
-    const fvMesh& mesh, const word& now, const word& first, scalar rho
+    const fvMesh& mesh, const word& now, const word& first,
+    const densityInput& density
 )
 :
     hMax(fieldIO(mesh, now, "hMax"), mesh),
@@ -201,11 +202,26 @@ hazardFields::hazardFields
             volScalarField(fieldIO(mesh, now, "pMax"), mesh).primitiveField()
         );
     }
+    else if (density.hasRho)
+    {
+        Info<< "    No field pMax: pMax = rho UMax^2, rho " << density.rho
+            << " kg/m^3 (transportProperties)" << nl;
+        maps.insert
+        (
+            "pMax", scalarField(density.rho*sqr(UMax.primitiveField()))
+        );
+    }
     else
     {
-        Info<< "    No field pMax: pMax = rho UMax^2, rho " << rho
-            << " kg/m^3 (transportProperties)" << nl;
-        maps.insert("pMax", scalarField(rho*sqr(UMax.primitiveField())));
+        skipped.append
+        (
+            "pMax skipped: no rho in " + density.file.relative
+            (
+                mesh.time().path()
+            )
+          + " and no field pMax in " + now
+          + " (add rho [kg/m^3] to have pMax = rho UMax^2)"
+        );
     }
     if (hasField(mesh, now, "tArrival"))
     {
@@ -218,8 +234,11 @@ hazardFields::hazardFields
     }
     else
     {
-        Info<< "    No field tArrival (a run of an older version): no"
-            << " arrival-time map" << nl;
+        skipped.append
+        (
+            "tArrival skipped: no field tArrival in " + now
+          + " (a run of an older version)"
+        );
     }
 }
 
@@ -236,19 +255,29 @@ void writeMaps
     for (const word& name : fields.maps.sortedToc())
     {
         const scalarField& f = fields.maps[name];
-        // -1 in tArrival: never arrived
+        // -1 in tArrival: never arrived; the deposit masked by itself
+        // (h > threshold at that time), the others by hMax
         const bool arrival = name == "tArrival";
+        const bool deposit = name == "deposit";
         writeMap
         (
             outDir/name, grid, pixelCell, f,
             [&](const label c)
             {
+                if (deposit)
+                {
+                    return f[c] > threshold;
+                }
                 return hMax[c] > threshold && !(arrival && f[c] < 0);
             }
         );
         Info<< "    Wrote " << name << " ("
             << (grid.northUp() ? ".asc, .tif" : ".tif") << "): range ["
             << gMin(f) << ", " << gMax(f) << "]" << nl;
+    }
+    for (const string& why : fields.skipped)
+    {
+        Info<< "    " << why.c_str() << nl;
     }
 }
 

@@ -290,21 +290,62 @@ void writePlanReport
     const scalar comAngle = radToDeg(std::atan2(dz, s));
     const scalar alpha = travelAngle(r.top, r.point);
 
+    // The flow at the domain's edge: a cell of the outermost ring of the
+    // plan grid with hMax > threshold
+    bool atBoundary = false;
+    {
+        const labelList cellOf = gridCells(h0.mesh(), mapping);
+        forAll(cellOf, k)
+        {
+            const label i = k % mapping.nx, j = k/mapping.nx;
+            if
+            (
+                (i == 0 || j == 0 || i == mapping.nx - 1
+              || j == mapping.ny - 1)
+             && cellOf[k] >= 0 && fields.hMax[cellOf[k]] > threshold
+            )
+            {
+                atBoundary = true;
+            }
+        }
+    }
+
     OFstream report(outDir/"report.dat");
     report.precision(15);
     report
         << "# hazardMaps: time " << now.name() << ", threshold "
         << threshold << " m on hMax; plan mode: volumes sum J h A,"
         << " J = sqrt(1 + |grad zb|^2)" << nl
-        << "releasedVolume " << released << nl
-        << "depositVolume " << deposit << nl
-        << "runoutX " << r.point[0] << nl
-        << "runoutY " << r.point[1] << nl
-        << "runoutZ " << r.point[2] << nl
-        << "travelAngle " << alpha << nl
-        << "comTravelAngle " << comAngle << nl
-        << "outflowVolume " << released - deposit << nl
-        << "comPathLength " << s << nl;
+        << "# lines 'key value'; each key's unit and meaning on the"
+        << " comment line above it" << nl;
+    writeKey(report, "releasedVolume", "m^3",
+        "sum of J h A at the first time directory", released);
+    writeKey(report, "depositVolume", "m^3",
+        "sum of J h A at that time (in the domain)", deposit);
+    writeKey(report, "runoutX", "m", "world X of the runout point (the bed"
+        " of the cell with hMax > threshold horizontally furthest from the"
+        " highest released point)", r.point[0]);
+    writeKey(report, "runoutY", "m", "world Y of the runout point",
+        r.point[1]);
+    writeKey(report, "runoutZ", "m", "elevation of the runout point",
+        r.point[2]);
+    writeKey(report, "travelAngle", "deg", "atan(drop / horizontal"
+        " distance), highest released point to the runout point", alpha);
+    writeKey(report, "comTravelAngle", "deg", "atan(dz / s) along the"
+        " centre of mass' path", comAngle);
+    writeKey(report, "outflowVolume", "m^3", "releasedVolume -"
+        " depositVolume: what left the domain", released - deposit);
+    writeKey(report, "comPathLength", "m", "s, the horizontal length of"
+        " the centre of mass' path", s);
+    writeKey(report, "reachesBoundary", "1", "1 if a cell of the grid's"
+        " outermost ring has hMax > threshold (the flow reached the"
+        " domain's edge), else 0", atBoundary ? 1 : 0);
+    if (atBoundary)
+    {
+        Info<< "    Warning: the flow reaches the domain's boundary"
+            << " (reachesBoundary 1; outflowVolume " << released - deposit
+            << " m^3)" << nl;
+    }
     Info<< "    Released volume " << released << " m^3, at time "
         << now.name() << " " << deposit << " m^3 in the domain, "
         << released - deposit << " m^3 left it" << nl

@@ -33,6 +33,7 @@ struct runout
     terrain::vec3 com0{0, 0, 0};
     terrain::vec3 com1{0, 0, 0};
     terrain::vec3 point{0, 0, 0};
+    runoutDefinition::result def;
 };
 
 
@@ -49,7 +50,6 @@ runout runoutOf
     const scalar cellSize = mapping.cellSize;
     const scalar cellArea = cellSize*cellSize;
     runout r;
-    label runoutCell = -1;
     forAll(C, c)
     {
         const terrain::vec3 W = bedPoint(mapping.surface, C[c], zb[c]);
@@ -60,32 +60,29 @@ runout runoutOf
             r.com0[k] += h0[c]*W[k];
             r.com1[k] += h[c]*W[k];
         }
-        if (h0[c] > 0 && W[2] > r.top[2])
-        {
-            r.top = W;
-        }
-        if (hMax[c] > threshold)
-        {
-            if
-            (
-                runoutCell < 0
-             || C[c].x() > C[runoutCell].x() + 0.5*cellSize
-             || (
-                    C[c].x() > C[runoutCell].x() - 0.5*cellSize
-                 && hMax[c] > hMax[runoutCell]
-                )
-            )
-            {
-                runoutCell = c;
-            }
-        }
     }
     for (int k = 0; k < 3; ++k)
     {
         r.com0[k] /= r.released/cellArea;
         r.com1[k] /= r.deposit > 0 ? r.deposit/cellArea : 1;
     }
-    r.point = bedPoint(mapping.surface, C[runoutCell], zb[runoutCell]);
+    // The runout point and the top of the release: runoutDefinition.H,
+    // shared with savageHutterFoam -ensemble's report
+    r.def = runoutDefinition::runoutOf
+    (
+        C.size(), threshold, cellSize, mapping.nx, mapping.ny,
+        [&](long c) { return C[c].x(); },
+        [&](long c) { return hMax[c]; },
+        [&](long c) { return h0[c]; },
+        [&](long c) { return long(std::floor(C[c].x()/cellSize)); },
+        [&](long c)
+        {
+            return long(std::floor((C[c].y() - mapping.yMin)/cellSize));
+        },
+        [&](long c) { return bedPoint(mapping.surface, C[c], zb[c]); }
+    );
+    r.top = r.def.top;
+    r.point = r.def.point;
     return r;
 }
 
@@ -94,8 +91,18 @@ runout runoutOf
 
 scalar travelAngle(const terrain::vec3& a, const terrain::vec3& b)
 {
-    const scalar dist = std::hypot(b[0] - a[0], b[1] - a[1]);
-    return radToDeg(std::atan2(a[2] - b[2], dist));
+    return runoutDefinition::travelAngle(a, b);
+}
+
+
+void writeKey
+(
+    Ostream& os, const char* key, const char* unit, const char* what,
+    const scalar value
+)
+{
+    os  << "# " << key << " [" << unit << "] " << what << nl
+        << key << ' ' << value << nl;
 }
 
 
@@ -107,24 +114,49 @@ void writeReport
 )
 {
     const runout r = runoutOf(threshold, mapping, h0, fields);
+    const scalar alpha = travelAngle(r.top, r.point);
+    const scalar comAlpha = travelAngle(r.com0, r.com1);
     OFstream report(outDir/"report.dat");
     report.precision(10);
     report
         << "# hazardMaps: time " << now << ", threshold "
-        << threshold << " m on hMax" << nl
-        << "releasedVolume " << r.released << nl
-        << "depositVolume " << r.deposit << nl
-        << "runoutX " << r.point[0] << nl
-        << "runoutY " << r.point[1] << nl
-        << "runoutZ " << r.point[2] << nl
-        << "travelAngle " << travelAngle(r.top, r.point) << nl
-        << "comTravelAngle " << travelAngle(r.com0, r.com1) << nl;
+        << threshold << " m on hMax; world coordinates of the DEM" << nl
+        << "# lines 'key value'; each key's unit and meaning on the"
+        << " comment line above it" << nl;
+    writeKey(report, "releasedVolume", "m^3",
+        "sum of h dA at the first time directory", r.released);
+    writeKey(report, "depositVolume", "m^3",
+        "sum of h dA at that time (in the domain)", r.deposit);
+    writeKey(report, "runoutX", "m", "world X of the runout point (the"
+        " bed of the cell with hMax > threshold furthest along the axis)",
+        r.point[0]);
+    writeKey(report, "runoutY", "m", "world Y of the runout point",
+        r.point[1]);
+    writeKey(report, "runoutZ", "m", "elevation of the runout point",
+        r.point[2]);
+    writeKey(report, "travelAngle", "deg", "atan(drop / horizontal"
+        " distance), highest released point to the runout point", alpha);
+    writeKey(report, "comTravelAngle", "deg", "the same between the"
+        " centres of mass of the release and of the material at that time",
+        comAlpha);
+    writeKey(report, "outflowVolume", "m^3", "releasedVolume -"
+        " depositVolume: what left the domain", r.released - r.deposit);
+    writeKey(report, "reachesBoundary", "1", "1 if a cell of the mesh's"
+        " outermost ring has hMax > threshold (the flow reached the"
+        " domain's edge: the runout may be cut off), else 0",
+        r.def.reachesBoundary ? 1 : 0);
     Info<< "    Released volume " << r.released << " m^3, at time "
         << now << " " << r.deposit << " m^3" << nl
         << "    Runout point (" << r.point[0] << " " << r.point[1] << " "
-        << r.point[2] << "), travel angle " << travelAngle(r.top, r.point)
-        << " deg, centre of mass " << travelAngle(r.com0, r.com1) << " deg"
-        << nl << "    Wrote " << outDir << nl << endl;
+        << r.point[2] << "), travel angle " << alpha
+        << " deg, centre of mass " << comAlpha << " deg" << nl;
+    if (r.def.reachesBoundary)
+    {
+        Info<< "    Warning: the flow reaches the domain's boundary"
+            << " (reachesBoundary 1; " << r.released - r.deposit
+            << " m^3 left it): the runout may lie beyond the mesh" << nl;
+    }
+    Info<< "    Wrote " << outDir << nl << endl;
 }
 
 } // End namespace Foam

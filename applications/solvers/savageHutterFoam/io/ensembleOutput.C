@@ -9,6 +9,12 @@ Description
 
 #include "ensembleRun.H"
 #include "OFstream.H"
+#include "IOdictionary.H"
+
+// The runout definition hazardMaps' report uses, and the terrain cases'
+// reference surface (plain C++ headers of the utilities)
+#include "../../../utilities/hazardMaps/runoutDefinition.H"
+#include "../../../utilities/terrain/referenceSurface.H"
 
 #include <algorithm>
 #include <cmath>
@@ -231,21 +237,97 @@ void ensembleRun<Real>::surfacePositions(const sh::Problem<Real>& pb)
 }
 
 
+namespace
+{
+
+//- The world position of a cell's bed: on a terrain case (axis mode) the
+//  reference surface of constant/terrainMapping, as hazardMaps places it;
+//  elsewhere the unfolded inclination (X, y, E)
+struct bedWorld
+{
+    bool terrain = false;
+    terrain::referenceSurface surface;
+
+    explicit bedWorld(const Time& runTime)
+    {
+        IOobject io
+        (
+            "terrainMapping", "constant", runTime,
+            IOobject::READ_IF_PRESENT, IOobject::NO_WRITE, false
+        );
+        if (!io.typeHeaderOk<IOdictionary>(true))
+        {
+            return;
+        }
+        const IOdictionary dict(io);
+        if (dict.getOrDefault<word>("mode", "axis") != "axis")
+        {
+            // A plan case: its report is hazardMaps' plan report; here the
+            // case's own coordinates
+            return;
+        }
+        const List<vector2D> table =
+            dict.get<List<vector2D>>("inclination");
+        std::vector<double> xT, zT;
+        for (const vector2D& p : table)
+        {
+            xT.push_back(p.x());
+            zT.push_back(p.y());
+        }
+        const vector o = dict.get<vector>("origin");
+        const vector2D t = dict.get<vector2D>("tangent");
+        surface = terrain::referenceSurface
+        (
+            {o.x(), o.y(), o.z()}, t.x(), t.y(), xT, zT
+        );
+        terrain = true;
+    }
+};
+
+
+const bedWorld& worldOf(const Time& runTime)
+{
+    static const bedWorld w(runTime);
+    return w;
+}
+
+} // namespace
+
+
 template<class Real>
 FixedList<double, 3> ensembleRun<Real>::releaseTop(const sh::Problem<Real>& pb) const
 {
-    FixedList<double, 3> top({-1e300, 0, 0});
-    for (label j = 0; j < pb.grid.ny; ++j)
+    // The world point of the highest released bed (runoutDefinition.H),
+    // Z = -1e300 when nothing is released
+    const bedWorld& bw = worldOf(runTime_);
+    const volVectorField& C = ac_.mesh.C();
+    const label nx = pb.grid.nx;
+    const auto world = [&](long c) -> runoutDefinition::vec3
     {
-        for (label i = 0; i < pb.grid.nx; ++i)
+        const label g = ac_.smesh.gridIndex(c);
+        const double zb = double(pb.zb[g]);
+        if (bw.terrain)
         {
-            double E, X;
-            position(pb, i, j, E, X);
-            if (double(pb.h[pb.cell(i, j)]) > ens_.runoutThreshold && E > top[0])
-            {
-                top = {E, X, double(pb.grid.yc(j))};
-            }
+            return bw.surface.world(C[c].x(), C[c].y(), zb);
         }
+        double E, X;
+        position(pb, g % nx, g/nx, E, X);
+        return {X, C[c].y(), E};
+    };
+    const runoutDefinition::result r = runoutDefinition::runoutOf
+    (
+        ac_.h.size(), 0, 1, nx, pb.grid.ny,
+        [&](long c) { return C[c].x(); },
+        [](long) { return 0.0; },
+        [&](long c) { return double(pb.h[ac_.smesh.gridIndex(c)]); },
+        [](long) { return 1L; },
+        [](long) { return 1L; },
+        world
+    );
+    FixedList<double, 3> top({0, 0, -1e300});
+    if (r.released)
+    {
+        top = {r.top[0], r.top[1], r.top[2]};
     }
     return top;
 }
@@ -260,50 +342,65 @@ void ensembleRun<Real>::writeReport()
     const double dx = double(pb0.grid.dx);
     const double dy = double(pb0.grid.dy);
     const double thr = ens_.runoutThreshold;
+    const bedWorld& bw = worldOf(runTime_);
+    const volVectorField& C = ac_.mesh.C();
 
     OFstream os(runTime_.path()/"ensemble"/"report.dat");
     os.precision(10);
     os  << "# savageHutterFoam -ensemble: " << n_ << " members, t = "
         << runTime_.timeName() << nl
-        << "# runout: the cell reached (hMax > " << thr << " m) farthest"
-        << " downslope; travel angle from the highest released cell"
-        << " (h > " << thr << " m at the start) to it [deg]" << nl
+        << "# the definitions of hazardMaps' report (runoutDefinition.H),"
+        << " threshold runoutThreshold " << thr << " m on hMax: runout"
+        << " point the bed of the cell with hMax > threshold furthest along"
+        << " the slope (x; of those the largest hMax); travel angle"
+        << " atan(drop / horizontal distance) from the highest released bed"
+        << " (h > 0 at the start) to it [deg]" << nl
+        << "# coordinates: "
+        << (
+               bw.terrain
+             ? "world (constant/terrainMapping), as hazardMaps writes them"
+             : "X horizontal along the unfolded inclination, Y = y,"
+               " Z elevation"
+           ) << nl
+        << "# units (the case's; m unless g says otherwise): releasedVolume, volume [m^3]; runoutX, runoutY,"
+        << " runoutZ [m]; travelAngle [deg]; reachesBoundary 1 if a cell of"
+        << " the mesh's outermost ring has hMax > threshold, else 0" << nl
         << "# member";
     for (const word& k : ens_.keys) { os << ' ' << k; }
     if (ens_.variesHScale) { os << " hScale"; }
     if (ens_.variesRelease) { os << " release"; }
-    os  << " releasedVolume volume runoutX runoutY travelAngle steps" << nl;
+    os  << " releasedVolume volume runoutX runoutY travelAngle steps"
+        << " runoutZ reachesBoundary" << nl;
     for (label k = 0; k < n_; ++k)
     {
         const sh::Problem<Real>& pb = problems_[k];
         const sh::PeakMaps<Real> p = solver_->peakMaps(k);
-        // Top of the release, runout point
-        const double eTop = top_[k][0];
-        const double xTop = top_[k][1];
-        const double yTop = top_[k][2];
-        double xRun = -1e300, eRun = 0, yRun = 0, xcRun = 0;
-        for (label j = 0; j < ny; ++j)
+        const auto world = [&](long c) -> runoutDefinition::vec3
         {
-            for (label i = 0; i < nx; ++i)
+            const label g = ac_.smesh.gridIndex(c);
+            const double zb = double(pb.zb[g]);
+            if (bw.terrain)
             {
-                double E, X;
-                position(pb, i, j, E, X);
-                const label c = pb.cell(i, j);
-                if (double(p.h[c]) > thr && X > xRun)
-                {
-                    xRun = X;
-                    eRun = E;
-                    yRun = double(pb.grid.yc(j));
-                    xcRun = double(pb.grid.xc(i));
-                }
+                return bw.surface.world(C[c].x(), C[c].y(), zb);
             }
-        }
-        const bool moved = eTop > -1e300 && xRun > -1e300;
-        const double d = moved
-            ? std::hypot(xRun - xTop, yRun - yTop) : 0;
-        const double angle = moved && d > 0
-            ? std::atan2(eTop - eRun, d)*180/constant::mathematical::pi
-            : 0;
+            double E, X;
+            position(pb, g % nx, g/nx, E, X);
+            return {X, C[c].y(), E};
+        };
+        const runoutDefinition::result r = runoutDefinition::runoutOf
+        (
+            ac_.h.size(), thr, dx, nx, ny,
+            [&](long c) { return C[c].x(); },
+            [&](long c) { return double(p.h[ac_.smesh.gridIndex(c)]); },
+            [](long) { return 0.0; },
+            [&](long c) { return long(ac_.smesh.gridIndex(c) % nx); },
+            [&](long c) { return long(ac_.smesh.gridIndex(c)/nx); },
+            world
+        );
+        const runoutDefinition::vec3 top{top_[k][0], top_[k][1], top_[k][2]};
+        const bool moved = top[2] > -1e300 && r.reached;
+        const double angle =
+            moved ? runoutDefinition::travelAngle(top, r.point) : 0;
         std::vector<Real> h, hu, hv;
         solver_->getState(k, h, hu, hv);
         double vol = 0;
@@ -316,8 +413,11 @@ void ensembleRun<Real>::writeReport()
         if (ens_.variesHScale) { os << ' ' << m.hScale; }
         if (ens_.variesRelease) { os << ' ' << m.release; }
         os  << ' ' << released_[k] << ' ' << vol << ' '
-            << (moved ? xcRun : 0) << ' ' << (moved ? yRun : 0) << ' '
-            << angle << ' ' << steps0_[k] + solver_->steps(k) << nl;
+            << (moved ? r.point[0] : 0) << ' '
+            << (moved ? r.point[1] : 0) << ' '
+            << angle << ' ' << steps0_[k] + solver_->steps(k) << ' '
+            << (moved ? r.point[2] : 0) << ' '
+            << (r.reachesBoundary ? 1 : 0) << nl;
     }
     Info<< "Wrote " << os.name() << nl;
 }
