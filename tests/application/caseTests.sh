@@ -1360,19 +1360,25 @@ for t in (10, 20):
     if not flow or min(flow) < 0 or max(flow) > t or max(flow) <= 0:
         sys.exit(1)
 PY
-    # Without rho and without the field pMax: refused, nothing written
+    # Without rho and without the field pMax at 20: the other maps
+    # written there, pMax skipped and said so
     rm -rf "$d/postProcessing/hazardMaps"
     sed -i 's/^rho .*//' "$d/constant/transportProperties"
     rm "$d/20/pMax"
     (cd "$d" && hazardMaps -time 10,20 > log.noRho 2>&1) \
-        && problems="$problems no error without rho and pMax;"
-    grep -q "needs the field pMax or rho" "$d/log.noRho" \
-        || problems="$problems no message naming pMax and rho;"
-    [ ! -d "$d/postProcessing/hazardMaps" ] \
-        || problems="$problems wrote maps without rho and pMax;"
+        || problems="$problems failed without rho and pMax;"
+    grep -q "pMax skipped" "$d/log.noRho" \
+        || problems="$problems no 'pMax skipped' without rho and pMax;"
+    for m in hMax UMax deposit tArrival
+    do
+        [ -f "$d/postProcessing/hazardMaps/20/$m.asc" ] \
+            || problems="$problems no $m at 20 without rho and pMax;"
+    done
+    [ ! -f "$d/postProcessing/hazardMaps/20/pMax.asc" ] \
+        || problems="$problems a pMax at 20 without rho and pMax;"
     if [ -z "$problems" ]
     then
-        pass "hazardMaps: -time 10,20, -time 10:20, -time 10, -latestTime and the default (latest) map the right times into postProcessing/hazardMaps/<time>; tArrival nodata where never reached; no pMax and no rho refused, nothing written"
+        pass "hazardMaps: -time 10,20, -time 10:20, -time 10, -latestTime and the default (latest) map the right times into postProcessing/hazardMaps/<time>; tArrival nodata where never reached; without rho and pMax the other maps written, pMax skipped and said so"
     else
         fail "hazardMaps times:$problems (see $d)"
     fi
