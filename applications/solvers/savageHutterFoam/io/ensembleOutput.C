@@ -291,6 +291,31 @@ const bedWorld& worldOf(const Time& runTime)
     return w;
 }
 
+
+//- The world point of cell c's bed (bedWorld), position(i, j, E, X) the
+//  unfolded inclination's elevation and horizontal position
+template<class Real, class Position>
+runoutDefinition::vec3 bedPoint
+(
+    const bedWorld& bw,
+    const avalancheCase& ac,
+    const sh::Problem<Real>& pb,
+    const long c,
+    const Position& position
+)
+{
+    const point& P = ac.mesh.C()[c];
+    const label g = ac.smesh.gridIndex(c);
+    const double zb = double(pb.zb[g]);
+    if (bw.terrain)
+    {
+        return bw.surface.world(P.x(), P.y(), zb);
+    }
+    double E, X;
+    position(g % pb.grid.nx, g/pb.grid.nx, E, X);
+    return {X, P.y(), E};
+}
+
 } // namespace
 
 
@@ -302,17 +327,12 @@ FixedList<double, 3> ensembleRun<Real>::releaseTop(const sh::Problem<Real>& pb) 
     const bedWorld& bw = worldOf(runTime_);
     const volVectorField& C = ac_.mesh.C();
     const label nx = pb.grid.nx;
-    const auto world = [&](long c) -> runoutDefinition::vec3
+    const auto world = [&](long c)
     {
-        const label g = ac_.smesh.gridIndex(c);
-        const double zb = double(pb.zb[g]);
-        if (bw.terrain)
+        return bedPoint(bw, ac_, pb, c, [&](label i, label j, double& E, double& X)
         {
-            return bw.surface.world(C[c].x(), C[c].y(), zb);
-        }
-        double E, X;
-        position(pb, g % nx, g/nx, E, X);
-        return {X, C[c].y(), E};
+            position(pb, i, j, E, X);
+        });
     };
     const runoutDefinition::result r = runoutDefinition::runoutOf
     (
@@ -375,17 +395,12 @@ void ensembleRun<Real>::writeReport()
     {
         const sh::Problem<Real>& pb = problems_[k];
         const sh::PeakMaps<Real> p = solver_->peakMaps(k);
-        const auto world = [&](long c) -> runoutDefinition::vec3
+        const auto world = [&](long c)
         {
-            const label g = ac_.smesh.gridIndex(c);
-            const double zb = double(pb.zb[g]);
-            if (bw.terrain)
-            {
-                return bw.surface.world(C[c].x(), C[c].y(), zb);
-            }
-            double E, X;
-            position(pb, g % nx, g/nx, E, X);
-            return {X, C[c].y(), E};
+            return bedPoint(bw, ac_, pb, c, [&](label i, label j, double& E, double& X)
+        {
+            position(pb, i, j, E, X);
+        });
         };
         const runoutDefinition::result r = runoutDefinition::runoutOf
         (
