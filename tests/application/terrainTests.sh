@@ -1286,6 +1286,31 @@ msg = "comPathLength %.15g m (150), comTravelAngle %.15g deg (atan(1/3) = %.15g)
         "No field h in .*/2.: the centre of mass' path" "hazardMaps"
 fi
 
+# 9a'. A release below its runout: released at (36, 20) at t = 0, the
+# mass at (4, 4), 32 cells (160 m) up the plane, at t = 1: hazardMaps
+# warns with both points and the negative travel angle
+if hazPlanCase haz-below constant/plane.asc
+then
+    if (cd "$work" && $python - "$c" <<'PYEOF'
+import sys
+from synth import *
+load(sys.argv[1])
+from synth import *   # (the names load set)
+write("0", "h", cells({(36, 20): 2}))
+write("1", "h", cells({(4, 4): 2}))
+write("1", "hMax", cells({(36, 20): 2, (4, 4): 2}))
+write("1", "UMax", cells({(36, 20): 1, (4, 4): 1}))
+write("1", "U", [(1.0, 0.0, 0.0)]*(nx*ny))
+PYEOF
+    ) && (cd "$c" && runApplication hazardMaps > /dev/null) \
+      && grep -q "the release is below its runout (travelAngle -" "$c/log.hazardMaps"
+    then
+        pass "plan-mode maps, a release below its runout: warned ($(grep -m1 -o 'lies [0-9.e+]* m above' "$c/log.hazardMaps"))"
+    else
+        fail "plan-mode maps, a release below its runout: no warning (see $c/log.hazardMaps)"
+    fi
+fi
+
 # 9b. On the quadratic bed (J varies from cell to cell): the release of
 # terrainToCase at t = 0; at t = 1 the cells of it with X > 1080 emptied
 # (left the domain), the rest kept.  releasedVolume that of terrainMapping,

@@ -289,6 +289,7 @@ void writePlanReport
     const scalar dz = P.empty() ? 0 : P.front()[2] - P.back()[2];
     const scalar comAngle = radToDeg(std::atan2(dz, s));
     const scalar alpha = travelAngle(r.top, r.point);
+    warnRunoutAbove(r.top, r.point);
 
     // The flow at the domain's edge: a cell of the outermost ring of the
     // plan grid with hMax > threshold

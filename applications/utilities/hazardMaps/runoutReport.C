@@ -95,6 +95,24 @@ scalar travelAngle(const terrain::vec3& a, const terrain::vec3& b)
 }
 
 
+void warnRunoutAbove(const terrain::vec3& top, const terrain::vec3& point)
+{
+    if (!(top[2] > -0.5*GREAT) || !(point[2] > top[2]))
+    {
+        // Nothing released, or the runout below the release
+        return;
+    }
+    WarningInFunction
+        << "The runout point (" << point[0] << ", " << point[1] << ", "
+        << point[2] << ") lies " << point[2] - top[2] << " m above the"
+        << " highest released point (" << top[0] << ", " << top[1] << ", "
+        << top[2] << "): the release is below its runout (travelAngle "
+        << travelAngle(top, point) << " deg < 0). Is the axis of"
+        << " system/terrainDict drawn uphill, or the release placed where"
+        << " the flow ends?" << nl << endl;
+}
+
+
 void writeKey
 (
     Ostream& os, const char* key, const char* unit, const char* what,
@@ -116,6 +134,10 @@ void writeReport
     const runout r = runoutOf(threshold, mapping, h0, fields);
     const scalar alpha = travelAngle(r.top, r.point);
     const scalar comAlpha = travelAngle(r.com0, r.com1);
+    if (r.def.released && r.def.reached)
+    {
+        warnRunoutAbove(r.top, r.point);
+    }
     OFstream report(outDir/"report.dat");
     report.precision(10);
     report
