@@ -98,6 +98,7 @@ avalancheRun<Real>::avalancheRun
         recordCentreOfMass();
     }
     start_ = lastLog_ = lastWrite_ = lastCheck_ = wallClock::now();
+    progress_.assign(1, {start_, double(t0_)});
 }
 
 
@@ -410,6 +411,12 @@ void avalancheRun<Real>::steadyCheck(const double dt)
     if (tol > 0 && rms < tol)
     {
         steady_ = true;
+        if (restBy_.empty())
+        {
+            std::ostringstream os;
+            os << "steadyStateTolerance " << tol;
+            restBy_ = os.str();
+        }
         Info<< "; RMS < steadyStateTolerance " << tol << ": steady state"
             << " reached at t = " << solver_->time();
     }
@@ -443,6 +450,12 @@ void avalancheRun<Real>::steadyCheck(const double dt)
         if (kineticPeak_ > 0 && energy < fraction*kineticPeak_)
         {
             steady_ = true;
+            if (restBy_.empty())
+            {
+                std::ostringstream os;
+                os << "kineticEnergyStop " << fraction;
+                restBy_ = os.str();
+            }
             Info<< "; below kineticEnergyStop " << fraction << " of the"
                 << " peak: the flow has stopped at t = " << solver_->time();
         }
@@ -473,17 +486,50 @@ bool avalancheRun<Real>::actOnSignals()
 
 
 template<class Real>
-void avalancheRun<Real>::logProgress()
+std::string avalancheRun<Real>::eta(const double t)
+{
+    const wallClock::time_point now = wallClock::now();
+    progress_.emplace_back(now, t);
+    // The recent samples: at most etaSamples, and none older than needed
+    // to span etaWindow
+    while
+    (
+        progress_.size() > 2
+     && (
+            progress_.size() > etaSamples()
+         || std::chrono::duration<double>(now - progress_[1].first).count()
+         >= etaWindow()
+        )
+    )
+    {
+        progress_.pop_front();
+    }
+    const double wall =
+        std::chrono::duration<double>(now - progress_.front().first).count();
+    const double simulated = t - progress_.front().second;
+    if (!(wall > 0 && simulated > 0))
+    {
+        return "-";
+    }
+    return hms(max(double(endTime_) - t, 0.0)*wall/simulated);
+}
+
+
+template<class Real>
+void avalancheRun<Real>::logProgress(const bool final)
 {
     const sh::Diagnostics d = solver_->diagnostics();
     const double t = solver_->time();
     const double done = (t - t0_)/max(endTime_ - t0_, SMALL);
-    const double wall = secondsSince(start_);
     // The step the state now allows (the last step taken may have been
     // shortened to land on a write time)
     const double dtNow = d.maxRate > 0
         ? min(ac_.input.maxDeltaT, ac_.input.model.cfl/d.maxRate)
         : solver_->lastDt();
+    // The peak speed and the moving volume to the digits a reader compares
+    char speed[32], moving[32];
+    snprintf(speed, sizeof(speed), "%.3g", d.maxSpeed);
+    snprintf(moving, sizeof(moving), "%.4g", d.movingVolume);
     Info<< "Time = " << t << " (" << label(100*done) << "%)"
         << "  deltaT = " << dtNow
         << "  Co = " << dtNow*d.maxRate
@@ -492,8 +538,9 @@ void avalancheRun<Real>::logProgress()
         << "  moving = " << d.movingCells
         << "  speedBounds = " << std::to_string(d.speedClips).c_str()
         << "  steps = " << solver_->steps()
-        << "  ETA "
-        << (done > 1e-9 ? hms(wall*(1 - done)/done) : std::string("-")).c_str()
+        << "  maxSpeed = " << speed
+        << "  movingVol = " << moving
+        << (final ? std::string("  end") : "  ETA " + eta(t)).c_str()
         << endl;
     if (!std::isfinite(d.volume))
     {
@@ -502,6 +549,29 @@ void avalancheRun<Real>::logProgress()
             << "; nothing more is written" << nl << exit(FatalError);
     }
     lastLog_ = wallClock::now();
+}
+
+
+template<class Real>
+std::string avalancheRun<Real>::endReason() const
+{
+    if (stopped_)
+    {
+        if (stoppedBy_ == "endTime")
+        {
+            return "endTime (lowered in the controlDict)";
+        }
+        if (stoppedBy_.compare(0, 7, "stopAt ") == 0)
+        {
+            return stoppedBy_ + " (controlDict)";
+        }
+        return stoppedBy_ + " (signal)";
+    }
+    if (steady_)
+    {
+        return "at rest (" + restBy_ + ")";
+    }
+    return "endTime";
 }
 
 
@@ -520,6 +590,7 @@ void avalancheRun<Real>::logIfDue()
 template<class Real>
 void avalancheRun<Real>::run()
 {
+    capLogPrecision();
     while (solver_->time() < endTime_ && !steady_ && !stopped_)
     {
         const wallClock::time_point stepStart = wallClock::now();
@@ -566,24 +637,27 @@ void avalancheRun<Real>::run()
     const double wall = secondsSince(start_);
     if (solver_->steps() > 0)
     {
-        logProgress();
+        logProgress(true);
     }
+    Info<< "End of run at t = " << solver_->time() << " s: "
+        << endReason().c_str() << nl;
     // All processors' cells
     const double cells = returnReduce(double(pb_.nCells()), sumOp<double>());
     const double updates = cells*double(solver_->steps());
     Info<< nl << "Time loop: " << solver_->steps() << " steps on "
         << std::to_string((long long)(cells)).c_str() << " cells in "
-        << wall << " s wall ("
+        << wallSeconds(wall).c_str() << " s wall ("
         << solver_->name().c_str()
         << (Pstream::parRun()
           ? " on each of " + std::to_string(Pstream::nProcs())
           + " processors" : std::string()).c_str()
         << ")" << nl
         << "Cell updates per second: "
-        << (wall > 0 ? updates/wall : 0.0) << nl
+        << rate3(wall > 0 ? updates/wall : 0.0).c_str() << nl
         << "Stepping: "
-        << (steppingSeconds_ > 0 ? updates/steppingSeconds_ : 0.0)
-        << " cell updates per second (" << steppingSeconds_
+        << rate3(steppingSeconds_ > 0 ? updates/steppingSeconds_ : 0.0).c_str()
+        << " cell updates per second ("
+        << wallSeconds(steppingSeconds_).c_str()
         << " s wall stepping, without writing)" << nl
         << "Thin cells whose speed was bounded (speedBounds, scheme.H): "
         << std::to_string(solver_->diagnostics().speedClips).c_str()
