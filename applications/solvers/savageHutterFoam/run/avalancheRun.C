@@ -98,7 +98,7 @@ avalancheRun<Real>::avalancheRun
         recordCentreOfMass();
     }
     start_ = lastLog_ = lastWrite_ = lastCheck_ = wallClock::now();
-    progress_.assign(1, {start_, double(t0_)});
+    eta_.start(t0_, 0);
 }
 
 
@@ -486,36 +486,6 @@ bool avalancheRun<Real>::actOnSignals()
 
 
 template<class Real>
-std::string avalancheRun<Real>::eta(const double t)
-{
-    const wallClock::time_point now = wallClock::now();
-    progress_.emplace_back(now, t);
-    // The recent samples: at most etaSamples, and none older than needed
-    // to span etaWindow
-    while
-    (
-        progress_.size() > 2
-     && (
-            progress_.size() > etaSamples()
-         || std::chrono::duration<double>(now - progress_[1].first).count()
-         >= etaWindow()
-        )
-    )
-    {
-        progress_.pop_front();
-    }
-    const double wall =
-        std::chrono::duration<double>(now - progress_.front().first).count();
-    const double simulated = t - progress_.front().second;
-    if (!(wall > 0 && simulated > 0))
-    {
-        return "-";
-    }
-    return hms(max(double(endTime_) - t, 0.0)*wall/simulated);
-}
-
-
-template<class Real>
 void avalancheRun<Real>::logProgress(const bool final)
 {
     const sh::Diagnostics d = solver_->diagnostics();
@@ -526,10 +496,9 @@ void avalancheRun<Real>::logProgress(const bool final)
     const double dtNow = d.maxRate > 0
         ? min(ac_.input.maxDeltaT, ac_.input.model.cfl/d.maxRate)
         : solver_->lastDt();
-    // The peak speed and the moving volume to the digits a reader compares
-    char speed[32], moving[32];
+    // The peak speed to 3 digits; the moving volume as the volume
+    char speed[32];
     snprintf(speed, sizeof(speed), "%.3g", d.maxSpeed);
-    snprintf(moving, sizeof(moving), "%.4g", d.movingVolume);
     Info<< "Time = " << t << " (" << label(100*done) << "%)"
         << "  deltaT = " << dtNow
         << "  Co = " << dtNow*d.maxRate
@@ -539,8 +508,10 @@ void avalancheRun<Real>::logProgress(const bool final)
         << "  speedBounds = " << std::to_string(d.speedClips).c_str()
         << "  steps = " << solver_->steps()
         << "  maxSpeed = " << speed
-        << "  movingVol = " << moving
-        << (final ? std::string("  end") : "  ETA " + eta(t)).c_str()
+        << "  movingVol = " << d.movingVolume
+        << (final ? std::string("  end") : "  ETA "
+          + eta_.text(t, double(solver_->steps()), dtNow, endTime_))
+           .c_str()
         << endl;
     if (!std::isfinite(d.volume))
     {
