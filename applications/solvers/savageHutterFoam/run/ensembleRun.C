@@ -444,7 +444,8 @@ void ensembleRun<Real>::run()
                 << label(100*done) << "% of endTime " << endTime
                 << "), next write " << next
                 << ", steps per member " << lo << " .. " << hi
-                << "  ETA " << eta.text(tMin, 0, HUGE_VAL, endTime).c_str() << nl;
+                << "  ETA " << eta.text(tMin, 0, HUGE_VAL, endTime).c_str()
+                << nl;
         }
         stepping +=
             std::chrono::duration<double>(clock::now() - t0).count();
