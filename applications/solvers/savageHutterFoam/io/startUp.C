@@ -102,8 +102,18 @@ controlSettings prepareStart(const argList& args)
 }
 
 
+void capLogPrecision()
+{
+    if (Sout.precision() > logPrecision())
+    {
+        Sout.precision(logPrecision());
+    }
+}
+
+
 void checkEndTime(const Time& runTime, const controlSettings& control)
 {
+    capLogPrecision();
     if (control.endTime < runTime.value())
     {
         FatalIOErrorInFunction(runTime.controlDict())

@@ -98,6 +98,7 @@ avalancheRun<Real>::avalancheRun
         recordCentreOfMass();
     }
     start_ = lastLog_ = lastWrite_ = lastCheck_ = wallClock::now();
+    eta_.start(t0_, 0);
 }
 
 
@@ -410,6 +411,12 @@ void avalancheRun<Real>::steadyCheck(const double dt)
     if (tol > 0 && rms < tol)
     {
         steady_ = true;
+        if (restBy_.empty())
+        {
+            std::ostringstream os;
+            os << "steadyStateTolerance " << tol;
+            restBy_ = os.str();
+        }
         Info<< "; RMS < steadyStateTolerance " << tol << ": steady state"
             << " reached at t = " << solver_->time();
     }
@@ -443,6 +450,12 @@ void avalancheRun<Real>::steadyCheck(const double dt)
         if (kineticPeak_ > 0 && energy < fraction*kineticPeak_)
         {
             steady_ = true;
+            if (restBy_.empty())
+            {
+                std::ostringstream os;
+                os << "kineticEnergyStop " << fraction;
+                restBy_ = os.str();
+            }
             Info<< "; below kineticEnergyStop " << fraction << " of the"
                 << " peak: the flow has stopped at t = " << solver_->time();
         }
@@ -473,17 +486,19 @@ bool avalancheRun<Real>::actOnSignals()
 
 
 template<class Real>
-void avalancheRun<Real>::logProgress()
+void avalancheRun<Real>::logProgress(const bool final)
 {
     const sh::Diagnostics d = solver_->diagnostics();
     const double t = solver_->time();
     const double done = (t - t0_)/max(endTime_ - t0_, SMALL);
-    const double wall = secondsSince(start_);
     // The step the state now allows (the last step taken may have been
     // shortened to land on a write time)
     const double dtNow = d.maxRate > 0
         ? min(ac_.input.maxDeltaT, ac_.input.model.cfl/d.maxRate)
         : solver_->lastDt();
+    // The peak speed to 3 digits; the moving volume as the volume
+    char speed[32];
+    snprintf(speed, sizeof(speed), "%.3g", d.maxSpeed);
     Info<< "Time = " << t << " (" << label(100*done) << "%)"
         << "  deltaT = " << dtNow
         << "  Co = " << dtNow*d.maxRate
@@ -492,8 +507,11 @@ void avalancheRun<Real>::logProgress()
         << "  moving = " << d.movingCells
         << "  speedBounds = " << std::to_string(d.speedClips).c_str()
         << "  steps = " << solver_->steps()
-        << "  ETA "
-        << (done > 1e-9 ? hms(wall*(1 - done)/done) : std::string("-")).c_str()
+        << "  maxSpeed = " << speed
+        << "  movingVol = " << d.movingVolume
+        << (final ? std::string("  end") : "  ETA "
+          + eta_.text(t, double(solver_->steps()), dtNow, endTime_))
+           .c_str()
         << endl;
     if (!std::isfinite(d.volume))
     {
@@ -502,6 +520,29 @@ void avalancheRun<Real>::logProgress()
             << "; nothing more is written" << nl << exit(FatalError);
     }
     lastLog_ = wallClock::now();
+}
+
+
+template<class Real>
+std::string avalancheRun<Real>::endReason() const
+{
+    if (stopped_)
+    {
+        if (stoppedBy_ == "endTime")
+        {
+            return "endTime (lowered in the controlDict)";
+        }
+        if (stoppedBy_.compare(0, 7, "stopAt ") == 0)
+        {
+            return stoppedBy_ + " (controlDict)";
+        }
+        return stoppedBy_ + " (signal)";
+    }
+    if (steady_)
+    {
+        return "at rest (" + restBy_ + ")";
+    }
+    return "endTime";
 }
 
 
@@ -520,6 +561,7 @@ void avalancheRun<Real>::logIfDue()
 template<class Real>
 void avalancheRun<Real>::run()
 {
+    capLogPrecision();
     while (solver_->time() < endTime_ && !steady_ && !stopped_)
     {
         const wallClock::time_point stepStart = wallClock::now();
@@ -566,24 +608,27 @@ void avalancheRun<Real>::run()
     const double wall = secondsSince(start_);
     if (solver_->steps() > 0)
     {
-        logProgress();
+        logProgress(true);
     }
+    Info<< "End of run at t = " << solver_->time() << " s: "
+        << endReason().c_str() << nl;
     // All processors' cells
     const double cells = returnReduce(double(pb_.nCells()), sumOp<double>());
     const double updates = cells*double(solver_->steps());
     Info<< nl << "Time loop: " << solver_->steps() << " steps on "
         << std::to_string((long long)(cells)).c_str() << " cells in "
-        << wall << " s wall ("
+        << wallSeconds(wall).c_str() << " s wall ("
         << solver_->name().c_str()
         << (Pstream::parRun()
           ? " on each of " + std::to_string(Pstream::nProcs())
           + " processors" : std::string()).c_str()
         << ")" << nl
         << "Cell updates per second: "
-        << (wall > 0 ? updates/wall : 0.0) << nl
+        << rate3(wall > 0 ? updates/wall : 0.0).c_str() << nl
         << "Stepping: "
-        << (steppingSeconds_ > 0 ? updates/steppingSeconds_ : 0.0)
-        << " cell updates per second (" << steppingSeconds_
+        << rate3(steppingSeconds_ > 0 ? updates/steppingSeconds_ : 0.0).c_str()
+        << " cell updates per second ("
+        << wallSeconds(steppingSeconds_).c_str()
         << " s wall stepping, without writing)" << nl
         << "Thin cells whose speed was bounded (speedBounds, scheme.H): "
         << std::to_string(solver_->diagnostics().speedClips).c_str()

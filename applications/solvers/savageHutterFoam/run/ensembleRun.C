@@ -6,6 +6,7 @@
 #include "backendSelection.H"
 #include "runSignals.H"
 #include "startUp.H"
+#include "wallClock.H"
 #include "OFstream.H"
 
 #include <algorithm>
@@ -423,6 +424,10 @@ void ensembleRun<Real>::run()
         writeStatistics();
     }
     double stepping = 0;
+    // The progress of the slowest member, to endTime
+    etaEstimate eta;
+    eta.start(t, 0);
+    const scalar tStart = t;
     while (t < endTime)
     {
         // The next write time, on the grid of a single run
@@ -454,8 +459,13 @@ void ensembleRun<Real>::run()
                 hi = std::max(hi, solver_->steps(k));
                 tMin = std::min(tMin, solver_->time(k));
             }
-            Info<< "Time = " << tMin << " (slowest member) of " << next
-                << ", steps per member " << lo << " .. " << hi << nl;
+            const double done = (tMin - tStart)/max(endTime - tStart, SMALL);
+            Info<< "Time = " << tMin << " (slowest member, "
+                << label(100*done) << "% of endTime " << endTime
+                << "), next write " << next
+                << ", steps per member " << lo << " .. " << hi
+                << "  ETA " << eta.text(tMin, 0, HUGE_VAL, endTime).c_str()
+                << nl;
         }
         stepping +=
             std::chrono::duration<double>(clock::now() - t0).count();
