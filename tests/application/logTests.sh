@@ -119,7 +119,12 @@ ok = len(ends) == 1 and ends[0][1] == "End of run at t = 10 s: endTime" \
 print("%s  accel: final line %r after the last progress line"
       % ("PASS" if ok else "FAIL", ends[0][1] if ends else None))
 
-# The ETA against the wall time still taken, at the line nearest 3/4 T
+# The ETA against the wall time still taken, at the line nearest 0.55 T.
+# With deltaT ~ 1/(a t + c) the recent-rate ETA is expected at 2t/(T + t)
+# = 0.71 of the time still taken, the mean rate since the start at
+# t/(T + t) = 0.35 (a little more with the fixed costs): both sit a
+# factor 1.3-1.4 from the 2x band
+# (at 0.75 T the mean rate's 0.43 was within wall-clock noise of it).
 def field(l, key):
     m = re.search(r"  %s = (\S+)" % key, l)
     return float(m.group(1)) if m else float("nan")
@@ -129,7 +134,7 @@ wallLoop = float(re.search(r" in (\S+) s wall", loop[0]).group(1)) if loop else 
 tStart = tEnd - wallLoop
 cand = [(w, l) for w, l in prog[:-1] if etaRe.search(l)]
 if cand:
-    w, l = min(cand, key=lambda p: abs(float(p[1].split()[2])/T - 0.75))
+    w, l = min(cand, key=lambda p: abs(float(p[1].split()[2])/T - 0.55))
     t = float(l.split()[2])
     h, mi, s = map(int, etaRe.search(l).groups())
     eta = 3600*h + 60*mi + s
@@ -141,9 +146,12 @@ if cand:
           % ("PASS" if ok else "FAIL", t, eta, actual, r, 2*t/(T + t)))
     dts = [field(l, "deltaT") for _, l in prog]
     shrink = dts[0]/dts[-1]
-    ok = math.isfinite(rOld) and not (0.5 <= rOld <= 2) and shrink > 5
-    print("%s  accel: the case tells the ETAs apart: deltaT shrinks %.1fx; the mean rate since the start would say %.1f s (ratio %.2f, outside 2x)"
-          % ("PASS" if ok else "FAIL", shrink, old, rOld))
+    # The first progress line comes after a few seconds of wall time, so
+    # the shrink between the lines depends on the machine; the assertion
+    # is the mean-rate ETA outside 2x.
+    ok = math.isfinite(rOld) and not (0.5 <= rOld <= 2) and shrink > 2
+    print("%s  accel: the case tells the ETAs apart: deltaT shrinks %.1fx between the first and the last line; the mean rate since the start would say %.1f s (ratio %.2f, outside 2x; %.2f expected)"
+          % ("PASS" if ok else "FAIL", shrink, old, rOld, t/(T + t)))
 else:
     print("FAIL  accel: no progress line with an ETA")
 
