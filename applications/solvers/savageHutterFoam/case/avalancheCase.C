@@ -417,6 +417,36 @@ bool avalancheCase::store
 }
 
 
+void avalancheCase::selectWrites(const bool restart)
+{
+    const wordList& chosen = input.control.writeFields;
+    const wordList& needed = controlSettings::restartFields();
+    auto set = [&](regIOobject& f)
+    {
+        const bool written =
+            chosen.empty() || chosen.found(f.name())
+         || (restart && needed.found(f.name()));
+        f.writeOpt() = written ? IOobject::AUTO_WRITE : IOobject::NO_WRITE;
+    };
+    set(h);
+    set(U);
+    set(zb);
+    set(hU);
+    set(regime);
+    set(hMax);
+    set(UMax);
+    set(tArrival);
+    if (pMax.valid())
+    {
+        set(pMax());
+    }
+    if (H.valid())
+    {
+        set(H());
+    }
+}
+
+
 void avalancheCase::restoreStartTime()
 {
     IOobject timeIO

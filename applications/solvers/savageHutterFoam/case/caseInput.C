@@ -278,7 +278,63 @@ void caseInput::readTimeControl()
             << " (reduced where the Courant number would exceed 1)" << nl;
     }
     Info<< "Output: " << writeControl << ", writeInterval "
-        << writeInterval << nl << endl;
+        << writeInterval << nl;
+    readFieldSelection();
+    Info<< endl;
+}
+
+
+void caseInput::readFieldSelection()
+{
+    const wordList& chosen = control.writeFields;
+    if (chosen.empty())
+    {
+        return;
+    }
+    // The fields of this case: pMax needs rho, H is plan coordinates'
+    wordList valid;
+    for (const word& name : controlSettings::writableFields())
+    {
+        if ((name != "pMax" || model.rho > 0) && (name != "H" || plan()))
+        {
+            valid.append(name);
+        }
+    }
+    for (const word& name : chosen)
+    {
+        if (!valid.found(name))
+        {
+            const dictionary& cd = mesh_.time().controlDict();
+            const entry* e = cd.findEntry("writeFields", keyType::LITERAL);
+            FatalIOErrorInFunction(cd)
+                << "writeFields at line " << e->startLineNumber()
+                << " names " << name << ", which this case does not have ("
+                << (name == "pMax"
+                  ? "the peak pressure needs rho in"
+                    " constant/transportProperties"
+                  : "H, the volume per plan area, is written in"
+                    " coordinates plan") << ")." << nl
+                << "Valid choices: " << valid << nl << exit(FatalIOError);
+        }
+    }
+    wordList restart;
+    for (const word& name : controlSettings::restartFields())
+    {
+        if (valid.found(name))
+        {
+            restart.append(name);
+        }
+    }
+    Info<< "Fields written: " << chosen << " at every write time, and the"
+        << " restart fields " << restart;
+    if (control.restartInterval > 0)
+    {
+        Info<< " every restartInterval " << control.restartInterval
+            << " s and";
+    }
+    Info<< " at the last write time (restartInterval "
+        << (control.restartInterval > 0 ? "set" : "0: only there") << ")"
+        << nl;
 }
 
 

@@ -59,6 +59,31 @@ void avalancheCase::checkStartFiles(const Time& t, const fvMesh& m)
         // No such directory: caseInput names startTime
         return;
     }
+    // A write time of writeFields without the restart fields: name the
+    // latest time that has them
+    const fileName hPath = io(t, m, "h", IOobject::MUST_READ).objectPath();
+    if (!isFile(hPath))
+    {
+        word latest;
+        for (const instant& i : t.times())
+        {
+            if (i.value() < t.value() && isFile(t.path()/i.name()/"h"))
+            {
+                latest = i.name();
+            }
+        }
+        if (!latest.empty())
+        {
+            reportUnreadableFile
+            (
+                t, hPath, "is missing: time " + t.timeName() + " holds the"
+                " fields of writeFields (system/controlDict) only, not the"
+                " restart fields. The latest time with them is " + latest
+              + ": restart from it with 'startFrom startTime; startTime "
+              + latest + ";' in system/controlDict"
+            );
+        }
+    }
     checkFile<volScalarField>(t, m, "h", true);
     checkFile<volVectorField>(t, m, "U", true);
     checkFile<volScalarField>(t, m, "zb", false);

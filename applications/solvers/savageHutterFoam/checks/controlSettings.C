@@ -295,6 +295,69 @@ void readWrites(const dictionary& cd, controlSettings& c)
     );
 }
 
+//- writeFields, restartInterval
+void readFieldSelection(const dictionary& cd, controlSettings& c)
+{
+    const wordList& valid = controlSettings::writableFields();
+    c.writeFields.clear();
+    const entry* e = cd.findEntry("writeFields", keyType::LITERAL);
+    if (e)
+    {
+        // (name name ...): the words between a pair of brackets
+        bool ok = e->isStream();
+        wordList names;
+        if (ok)
+        {
+            const ITstream& is = e->stream();
+            const label n = is.size();
+            ok = n >= 2 && is[0].isPunctuation()
+              && is[0].pToken() == token::BEGIN_LIST
+              && is[n - 1].isPunctuation()
+              && is[n - 1].pToken() == token::END_LIST;
+            for (label i = 1; ok && i < n - 1; ++i)
+            {
+                ok = is[i].isWord();
+                if (ok)
+                {
+                    names.append(is[i].wordToken());
+                }
+            }
+        }
+        word bad;
+        forAll(names, i)
+        {
+            if (!valid.found(names[i]) && bad.empty())
+            {
+                bad = names[i];
+            }
+            if (names.find(names[i]) != i && bad.empty())
+            {
+                bad = names[i] + " (twice)";
+            }
+        }
+        if (!ok || names.empty() || !bad.empty())
+        {
+            FatalIOErrorInFunction(cd)
+                << "Invalid writeFields " << asWritten(*e).c_str()
+                << " at line " << e->startLineNumber()
+                << (bad.empty() ? std::string() : ": " + bad).c_str()
+                << " (the fields written at every write time, a list of"
+                << " names; leave the entry out to write all of them)."
+                << nl << "Valid choices: " << choices(valid).c_str() << nl
+                << exit(FatalIOError);
+        }
+        c.writeFields = names;
+    }
+    const scalar zero = 0;
+    c.restartInterval = number
+    (
+        cd, "restartInterval", range{0, inf, false, true, false}, &zero,
+        "the simulated time between the write times that also hold the"
+        " restart fields when writeFields is set; 0: the last write time"
+        " only"
+    );
+}
+
 //- The entries of the written files' format, checked only
 void checkFormat(const dictionary& cd)
 {
@@ -325,6 +388,27 @@ void checkFormat(const dictionary& cd)
 } // namespace
 
 
+const wordList& controlSettings::writableFields()
+{
+    static const wordList names
+    ({
+        "h", "U", "hU", "H", "zb", "regime", "hMax", "UMax", "pMax",
+        "tArrival"
+    });
+    return names;
+}
+
+
+const wordList& controlSettings::restartFields()
+{
+    static const wordList names
+    ({
+        "h", "U", "hU", "H", "zb", "hMax", "UMax", "pMax", "tArrival"
+    });
+    return names;
+}
+
+
 controlSettings controlSettings::read
 (
     const dictionary& cd,
@@ -336,6 +420,7 @@ controlSettings controlSettings::read
     readStartStop(cd, c);
     readTimeStep(cd, c);
     readWrites(cd, c);
+    readFieldSelection(cd, c);
     checkFormat(cd);
     c.runTimeModifiable = onOff(cd, "runTimeModifiable", false);
 

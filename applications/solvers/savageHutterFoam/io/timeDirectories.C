@@ -450,7 +450,7 @@ void moveIntoPlace
 } // namespace
 
 
-void atomicWriter::write()
+void atomicWriter::write(const bool restart)
 {
     const fileName caseDir =
         within_.empty() ? runTime_.path() : runTime_.path()/within_;
@@ -466,10 +466,32 @@ void atomicWriter::write()
     moveIntoPlace(caseDir, staging, name);
     ::rmdir(staging.c_str());
 
-    written_.push(name);
+    const bool again = !written_.empty() && written_.top() == name;
+    if (!again)
+    {
+        written_.push(name);
+    }
+    if (restart)
+    {
+        // The one kept beyond purgeWrite is no longer the latest
+        if (!keptRestart_.empty() && keptRestart_ != name)
+        {
+            rmDir(caseDir/keptRestart_);
+            keptRestart_.clear();
+        }
+        lastRestart_ = name;
+    }
     while (purgeWrite_ > 0 && written_.size() > purgeWrite_)
     {
-        rmDir(caseDir/written_.pop());
+        const word old = written_.pop();
+        if (old == lastRestart_)
+        {
+            keptRestart_ = old;
+        }
+        else
+        {
+            rmDir(caseDir/old);
+        }
     }
 }
 

@@ -51,6 +51,8 @@ avalancheRun<Real>::avalancheRun
     lastCheck_(start_),
     written_(1, runTime_.timeName()),
     lastWritten_(t0_),
+    lastRestart_(t0_),
+    lastFull_(true),
     kineticPeak_(0),
     steadyDir_
     (
@@ -334,8 +336,27 @@ bool avalancheRun<Real>::advance()
 
 
 template<class Real>
-void avalancheRun<Real>::write()
+bool avalancheRun<Real>::restartDue(const bool last) const
 {
+    const scalar every = ac_.input.control.restartInterval;
+    return ac_.input.control.writeFields.empty() || last
+        || (
+               every > 0
+            && solver_->time() - lastRestart_ >= every*(1 - 1e-9)
+           );
+}
+
+
+template<class Real>
+void avalancheRun<Real>::write(const bool restart)
+{
+    // The time already written, without the restart fields: again, with
+    // them (the state has not changed since)
+    const bool again = !(solver_->time() > lastWritten_);
+    if (again && (lastFull_ || !restart))
+    {
+        return;
+    }
     const double dtWrite = solver_->time() - lastWritten_;
     solver_->getState(hs_, hus_, hvs_);
     // Not written on any processor unless good on all (store agrees)
@@ -347,10 +368,32 @@ void avalancheRun<Real>::write()
             << " written time directory holds the last good state" << nl
             << exit(FatalError);
     }
-    timeNames::distinguish(solver_->time(), lastWritten_, written_);
+    // Before the write: a run that comes to rest here ends with it
+    if (dtWrite > 0)
+    {
+        steadyCheck(dtWrite);
+    }
+    const bool full = restartDue
+    (
+        restart || steady_ || stopAtNextWrite_
+     || !(solver_->time() < endTime_)
+    );
+    ac_.selectWrites(full);
+    if (!again)
+    {
+        timeNames::distinguish(solver_->time(), lastWritten_, written_);
+    }
     runTime_.setTime(solver_->time(), index0_ + solver_->steps());
     runTime_.setDeltaT(solver_->lastDt(), false);
-    writer_.write();
+    writer_.write(full);
+    if (again)
+    {
+        Info<< "Wrote " << runTime_.timeName() << " again, with the restart"
+            << " fields" << nl;
+        lastRestart_ = solver_->time();
+        lastFull_ = true;
+        return;
+    }
     functions_.execute();
     if (ac_.input.plan())
     {
@@ -359,9 +402,10 @@ void avalancheRun<Real>::write()
     written_.append(runTime_.timeName());
     lastWritten_ = solver_->time();
     lastWrite_ = wallClock::now();
-    if (dtWrite > 0)
+    lastFull_ = full;
+    if (full)
     {
-        steadyCheck(dtWrite);
+        lastRestart_ = solver_->time();
     }
 }
 
@@ -472,11 +516,8 @@ bool avalancheRun<Real>::actOnSignals()
     Info<< nl << runSignals::name(runSignals::last) << " at t = "
         << solver_->time() << ": writing"
         << (stop ? " and stopping" : "") << nl << endl;
-    // Wherever the run is, write time or not
-    if (solver_->time() > lastWritten_)
-    {
-        write();
-    }
+    // Wherever the run is, write time or not, with the restart fields
+    write(true);
     if (stop)
     {
         stoppedBy_ = runSignals::name(runSignals::last);

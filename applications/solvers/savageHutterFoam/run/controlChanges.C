@@ -121,10 +121,13 @@ void avalancheRun<Real>::applyControl(const controlSettings& c)
      || c.maxDeltaT != now.maxDeltaT
      || c.adjustTimeStep != now.adjustTimeStep
      || c.purgeWrite != now.purgeWrite
+     || c.writeFields != now.writeFields
+     || c.restartInterval != now.restartInterval
     )
     {
-        Info<< " (deltaT, maxCo, maxDeltaT, adjustTimeStep and"
-            << " purgeWrite are read at the next start)";
+        Info<< " (deltaT, maxCo, maxDeltaT, adjustTimeStep, purgeWrite,"
+            << " writeFields and restartInterval are read at the next"
+            << " start)";
     }
     Info<< nl << endl;
     now.endTime = c.endTime;
@@ -147,10 +150,9 @@ bool avalancheRun<Real>::stopOnControl(const controlSettings& c)
     if (c.stopAt == "writeNow" || !(solver_->time() < endTime_))
     {
         stoppedBy_ = c.stopAt == "writeNow" ? "stopAt writeNow" : "endTime";
-        if (solver_->time() > lastWritten_)
-        {
-            write();
-        }
+        // The last write: with the restart fields (again at a time
+        // written without them)
+        write(true);
         return true;
     }
     return false;

@@ -378,6 +378,13 @@ ensembleRun<Real>::ensembleRun
     startName_(ac.runTime.timeName())
 {
     checkOptions();
+    if (!ac_.input.control.writeFields.empty())
+    {
+        WarningInFunction
+            << "writeFields (system/controlDict) applies to single runs:"
+            << " the ensemble writes every field of its members and"
+            << " statistics" << nl << endl;
+    }
 
     // What a run killed while writing left (timeDirectories.H): a
     // directory it was replacing back in place, the incomplete ones
