@@ -19,8 +19,15 @@
     cells; 7 members on 60 x 28 launched 3 members at a time (the chunks
     of an ensemble of more than 65535 members: SH_ENSEMBLE_CHUNK); the
     sum of the wet cell updates over all members against the singles'
-    where all are run.  Refused: members with another grid
-    (std::invalid_argument, as the CPU backend).
+    where all are run.  Plan coordinates (PlanStages' batched kernels,
+    planExactness): three members of tests/common/gpuCases.H planBumpyDem
+    with delta and the release's thickness varied, 97 x 41 cells, to
+    t = 0.5, 1 and 1.5 (a stop by the wall budget in the second leg),
+    each member bit for bit its CpuSolver run (float: unless
+    SH_CUDA_FLOAT_APPROX), its single CUDA run and its CPU ensemble's
+    member; double in one launch, float 2 members a launch.  Refused:
+    members with another grid, and a slope-coordinate member among plan
+    ones (std::invalid_argument, as the CPU backend).
 
     Without a usable GPU (no CUDA in the build, no device) the test
     prints why and exits with 77, which CTest reports as skipped.
@@ -210,6 +217,212 @@ void exactness(Counter& t, int k, int nMembers, int chunk, unsigned seed)
     );
 }
 
+//- Member k of the plan-coordinate ensemble: tests/common/gpuCases.H
+//  planBumpyDem (a pile released on a bumpy DEM, a small one on its
+//  floor, 97 x 41 cells) with the friction angle delta and the release's
+//  thickness scaled, hazard maps on
+template<class Real>
+Problem<Real> planMember(int k)
+{
+    const double deltas[] = {24, 20, 27};
+    const double scales[] = {1, 1.25, 0.75};
+    const double delta = deltas[k % 3];
+    const double scale = scales[k % 3];
+    ModelInput in;
+    in.g = 9.81;
+    in.earthPressure = EarthPressureModel::activePassive;
+    in.phiDeg = 32;
+    in.coulomb.deltaDeg = delta;
+    in.rho = 1500;
+    in.arrivalThreshold = 0.004;
+    Problem<Real> pb = shcases::planProblem<Real>
+    (
+        in, 97, 41, 0, 9.7, -2.05, 2.05, shcases::planBumpyBed,
+        [scale](double x, double y)
+        {
+            const double r2 = (x - 1.8)*(x - 1.8) + y*y;
+            const double q2 = (x - 8.6)*(x - 8.6) + (y + 1.1)*(y + 1.1);
+            const double h = r2 < 1.1*1.1
+                ? 0.4*(1 - r2/(1.1*1.1))
+                : (q2 < 0.5*0.5 ? 0.1*(1 - q2/(0.5*0.5)) : 0.0);
+            return Primitive{scale*h, 0, 0};
+        }
+    );
+    pb.bc.type[xMin] = BCType::wall;
+    pb.bc.type[yMin] = BCType::wall;
+    return pb;
+}
+
+//- An ensemble in plan coordinates (PlanStages' batched kernels): three
+//  members of planMember (delta 24, 20, 27 deg; release x 1, 1.25, 0.75),
+//  batched on the GPU, advanced to t = 0.5, 1 and 1.5 (the second leg
+//  with maxDt 0.002, so that it needs more steps than one graph holds:
+//  first stopped by a spent wall budget, then continued), every member
+//  compared at every end time, bit for bit (compareMember: h, hu, hv,
+//  hMax, speed, pressure, arrival, t, steps, last dt, diagnostics, speed
+//  clips), with its CPU single run (CpuSolver), its single CUDA run
+//  (makeCudaSolver) and its member of the CPU ensemble (makeCpuEnsemble);
+//  in float against the CPU only where the float kernels are IEEE-rounded
+//  (not SH_CUDA_FLOAT_APPROX).  chunk > 0: launched chunk members at a
+//  time (SH_ENSEMBLE_CHUNK).
+template<class Real>
+void planExactness(Counter& t, int chunk)
+{
+    const char* prec = sizeof(Real) == 8 ? "double" : "float";
+    const bool againstCpu = sizeof(Real) == 8 || !cudaFloatApproximate();
+    const int nMembers = 3;
+    std::vector<Problem<Real>> members;
+    for (int k = 0; k < nMembers; ++k)
+    {
+        members.push_back(planMember<Real>(k));
+    }
+    if (chunk > 0)
+    {
+        setenv("SH_ENSEMBLE_CHUNK", std::to_string(chunk).c_str(), 1);
+    }
+    else
+    {
+        unsetenv("SH_ENSEMBLE_CHUNK");
+    }
+    std::unique_ptr<EnsembleSolver<Real>> e = makeCudaEnsemble(members);
+    unsetenv("SH_ENSEMBLE_CHUNK");
+    // The CPU's runs: only where the GPU's float is IEEE-rounded
+    std::unique_ptr<EnsembleSolver<Real>> cpuEnsemble =
+        againstCpu ? makeCpuEnsemble(members) : nullptr;
+    std::vector<std::unique_ptr<Solver<Real>>> cpu, gpu;
+    for (int m = 0; m < nMembers; ++m)
+    {
+        if (againstCpu)
+        {
+            cpu.emplace_back(new CpuSolver<Real>(members[m], true));
+        }
+        gpu.push_back(makeCudaSolver(members[m]));
+    }
+    std::printf
+    (
+        "\n  plan coordinates, %s, %d members on %d x %d cells (%s), against"
+        " the single CUDA runs%s\n",
+        prec, nMembers, members[0].grid.nx, members[0].grid.ny,
+        e->name().c_str(),
+        againstCpu ? ", CpuSolver and the CPU ensemble's members" : ""
+    );
+
+    const double ends[] = {0.5, 1.0, 1.5};
+    std::string bad;
+    bool early = false;
+    bool reached = true;
+    for (int leg = 0; leg < 3; ++leg)
+    {
+        const double tEnd = ends[leg];
+        const double maxDt = leg == 1 ? 0.002 : 1e30;
+        e->setMaxDt(maxDt);
+        if (cpuEnsemble) { cpuEnsemble->setMaxDt(maxDt); }
+        for (auto& s : cpu) { s->setMaxDt(maxDt); }
+        for (auto& s : gpu) { s->setMaxDt(maxDt); }
+        if (leg == 1)
+        {
+            early = e->advance(tEnd, 0.0);
+            int behind = 0;
+            for (int m = 0; m < nMembers; ++m)
+            {
+                behind += e->time(m) < tEnd;
+            }
+            std::printf
+            (
+                "    to t = %g with a wall budget of 0 s: %s, %d of %d"
+                " members short of it\n",
+                tEnd, early ? "reached (not stopped)" : "stopped early",
+                behind, nMembers
+            );
+        }
+        reached = e->advance(tEnd, 1e300) && reached;
+        if (againstCpu)
+        {
+            cpuEnsemble->advance(tEnd, 1e300);
+        }
+        const std::string at = " t = " + std::to_string(tEnd) + " member ";
+        long lo = -1;
+        long hi = 0;
+        for (int m = 0; m < nMembers; ++m)
+        {
+            gpu[m]->advance(tEnd, 1e300);
+            std::string b = compareMember(*e, m, *gpu[m]);
+            if (!b.empty())
+            {
+                bad += at + std::to_string(m) + " (single CUDA):" + b + ";";
+            }
+            if (againstCpu)
+            {
+                b = compareMember(*e, m, *cpuEnsemble);
+                if (!b.empty())
+                {
+                    bad += at + std::to_string(m) + " (CPU ensemble):" + b
+                      + ";";
+                }
+                cpu[m]->advance(tEnd, 1e300);
+                b = compareMember(*e, m, *cpu[m]);
+                if (!b.empty())
+                {
+                    bad += at + std::to_string(m) + " (CpuSolver):" + b + ";";
+                }
+            }
+            lo = lo < 0 ? e->steps(m) : std::min(lo, e->steps(m));
+            hi = std::max(hi, e->steps(m));
+        }
+        std::printf
+        (
+            "    t = %g: compared (every member's steps %ld .. %ld)\n",
+            tEnd, lo, hi
+        );
+    }
+    long long wet = 0;
+    for (auto& s : gpu)
+    {
+        wet += s->wetCellUpdates();
+    }
+    if (wet != e->wetCellUpdates())
+    {
+        bad += " wet cell updates " + std::to_string(e->wetCellUpdates())
+          + " against " + std::to_string(wet) + ";";
+    }
+    t.check
+    (
+        !early && reached && bad.empty(),
+        std::string("plan coordinates, ") + prec + ", "
+      + std::to_string(nMembers) + " members on bumpy DEM "
+      + std::to_string(members[0].grid.nx) + " x "
+      + std::to_string(members[0].grid.ny)
+      + (chunk > 0 ? ", " + std::to_string(chunk) + " per launch" : "")
+      + ": each member bit for bit its single CUDA run"
+      + (againstCpu ? ", CpuSolver run and CPU ensemble member" : "")
+      + " at t = 0.5, 1 (maxDt"
+        " 0.002, stopped by the wall budget, then on), 1.5, wet cell"
+        " updates summed"
+      + (bad.empty() ? "" : " -" + bad)
+    );
+}
+
+//- A member in slope coordinates among plan ones: refused, as another
+//  grid (the bed's geometry and the kernels are member 0's)
+void planRefusal(Counter& t)
+{
+    std::vector<Problem<double>> ms;
+    ms.push_back(planMember<double>(0));
+    ms.push_back(planMember<double>(1));
+    ms[1].params.planTerrain = false;
+    bool refused = false;
+    try
+    {
+        makeCudaEnsemble(ms);
+    }
+    catch (const std::invalid_argument& e)
+    {
+        std::printf("    refused: %s\n", e.what());
+        refused = true;
+    }
+    t.check(refused, "a slope-coordinate member among plan ones refused");
+}
+
 void refusal(Counter& t)
 {
     std::vector<Problem<double>> ms = shcases::inclinedPlaneMembers<double>(1, 3);
@@ -252,6 +465,9 @@ int main(int argc, char* argv[])
     exactness<double>(t, 1, 1, 0, seed + 2);
     exactness<float>(t, 1, 23, 0, seed + 3);
     exactness<float>(t, 2, 7, 3, seed + 4);
+    planExactness<double>(t, 0);
+    planExactness<float>(t, 2);
     refusal(t);
+    planRefusal(t);
     return t.finish();
 }

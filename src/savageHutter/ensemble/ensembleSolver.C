@@ -68,6 +68,12 @@ void checkEnsemble(const std::vector<Problem<Real>>& members)
         {
             what = "topography zb";
         }
+        else if (first.params.planTerrain != m.params.planTerrain)
+        {
+            // The bed's geometry (and on the CUDA backend the kernels)
+            // is member 0's
+            what = "coordinates (slope or plan)";
+        }
         else if (first.startTime != m.startTime)
         {
             what = "start time";

@@ -22,14 +22,6 @@ void ensembleRun<Real>::checkOptions() const
             << "-ensemble runs serial: not with -parallel" << nl
             << exit(FatalError);
     }
-    if (ac_.input.plan())
-    {
-        // The CPU backend's members are CpuSolvers, which step plan
-        // coordinates; the batched CUDA backend refuses them
-        // (makeCudaEnsemble: 'use -backend cpu')
-        Info<< "Note: coordinates plan: the members run on the CPU backend"
-            << " only (-backend cpu)" << nl << endl;
-    }
     if (ac_.input.steadyStateTolerance > 0)
     {
         Info<< "Note: steadyStateTolerance is not applied to an"

@@ -170,16 +170,9 @@ std::unique_ptr<sh::EnsembleSolver<Real>> selectEnsembleBackend
 )
 {
     std::string why;
-    // Plan coordinates: the batched CUDA backend does not step them, so
-    // auto takes the CPU (-backend cuda is refused by makeCudaEnsemble)
-    const bool plan = !members.empty() && members[0].params.planTerrain;
-    if (plan && backend == "auto")
-    {
-        Info<< "Ensemble in plan coordinates: running on the CPU (the"
-            << " batched CUDA backend steps slope coordinates only)" << nl;
-    }
-    const bool useCuda = !(plan && backend == "auto")
-     && useCudaBackend<Real>(backend, false, why);
+    // Slope and plan coordinates alike: the batched CUDA backend steps
+    // both (cudaEnsembleImpl.H, the kernels of the case's stages)
+    const bool useCuda = useCudaBackend<Real>(backend, false, why);
     try
     {
         return useCuda
