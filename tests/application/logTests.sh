@@ -9,17 +9,17 @@
 #     accel: a uniform layer 0.1 m thick on a 40 deg slope with delta 5 deg
 #       and open ends accelerates uniformly, u = g (sin - cos tan delta) t,
 #       every cell wet, so that the cost of a step stays put while the time
-#       step shrinks like 1/(c + u): about 15x from the first progress line
-#       to the last.  Its log (writePrecision 17, every line stamped with
-#       the wall time as it arrives) is checked for
+#       step shrinks like 1/(c + u): 66x from the start to the end.  Its
+#       log (writePrecision 17, every line stamped with the wall time as it
+#       arrives) is checked for
 #       - the ETA's format h:mm:ss on every progress line but the last,
 #         which has "end" instead, and the final line
 #         "End of run at t = 10 s: endTime" after it;
-#       - the ETA at the line nearest t = 3/4 endTime within a factor 2 of
+#       - the ETA at the line nearest t = 0.55 endTime within a factor 2 of
 #         the wall time the run then still took.  There an ETA from the
 #         rate now (the time step the state allows times the steps per
-#         wall second) expects 2t/(T + t) = 0.86 of it, while the mean rate
-#         since the start (the ETA before) gives t/(T + t) = 0.43: that
+#         wall second) expects 2t/(T + t) = 0.71 of it, while the mean rate
+#         since the start (the ETA before) gives t/(T + t) = 0.35: that
 #         one, computed from the same line, is checked to fall outside, so
 #         that the case tells them apart;
 #       - maxSpeed on every line within 5 % of the exact g (sin - cos tan
