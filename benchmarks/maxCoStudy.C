@@ -31,7 +31,10 @@
        t = 1 s: RMS, Linf of h against the initial state, max |hu|
     F  lake at rest with a shoreline, active/passive K (numericsFidelity.C
        1), 64^2, t = 1 s: max |v|, max |dh|
-  Usage: maxCoStudy [-co 0.4,0.6,1.0] [-cases ABCDEF]
+    G  collapsing pile, delta = phi = 20 deg (collapsingPile.C), 64^2,
+       t = 4 s: no exact solution; at rest (max |v| = 0, moving cells),
+       max h, cells not mirror-symmetric bit for bit
+  Usage: maxCoStudy [-co 0.4,0.6,1.0] [-cases ABCDEFG]
 \*---------------------------------------------------------------------------*/
 
 #include "testing.H"
@@ -447,13 +450,67 @@ void caseF(const std::vector<double>& cos)
     }
 }
 
+void caseG(const std::vector<double>& cos)
+{
+    header("G. Collapsing pile, delta = phi = 20 deg (5.2, Fig. 9; collapsingPile.C), "
+           "active/passive, walls, 64^2, t = 4 s (no exact solution: at rest and symmetric)",
+        {"max |v|", "moving", "max h", "asymmetric"});
+    for (const double co : cos)
+    {
+        ModelInput in;
+        in.g = 9.81;
+        in.earthPressure = EarthPressureModel::activePassive;
+        in.phiDeg = 20;
+        in.coulomb.deltaDeg = 20;
+        in.cfl = co;
+        const int n = 64;
+        Problem<double> pb(makeParams<double>(in), n, n, -0.3, 0.3, -0.3, 0.3);
+        for (int s = 0; s < 4; ++s) { pb.bc.type[s] = BCType::wall; }
+        const double d = 0.6/n;
+        for (int j = 0; j < n; ++j)
+        {
+            for (int i = 0; i < n; ++i)
+            {
+                const double x = (i + 0.5 - 0.5*n)*d, y = (j + 0.5 - 0.5*n)*d;
+                const double r = std::sqrt(x*x + y*y);
+                pb.zb[pb.cell(i, j)] = 0.5*r;
+                pb.h[pb.cell(i, j)] = std::max(0.0, 0.2 - r);
+            }
+        }
+        const std::vector<double> h0 = pb.h;
+        std::vector<double> h, hu, hv;
+        Row r = runProblem(pb, 4.0, h, hu, hv);
+        double vmax = 0, hmax = 0;
+        long moving = 0, asym = 0;
+        for (int j = 0; j < n; ++j)
+        {
+            for (int i = 0; i < n; ++i)
+            {
+                const int c = i + n*j;
+                const int mx = (n - 1 - i) + n*j, my = i + n*(n - 1 - j);
+                asym += h[c] != h[mx] || hu[c] != -hu[mx] || hv[c] != hv[mx]
+                     || h[c] != h[my] || hu[c] != hu[my] || hv[c] != -hv[my];
+                hmax = std::max(hmax, h[c]);
+                if (h[c] > 0)
+                {
+                    vmax = std::max(vmax, std::hypot(hu[c], hv[c])/h[c]);
+                    moving += hu[c] != 0 || hv[c] != 0;
+                }
+            }
+        }
+        r.mass = std::fabs(sum(h) - sum(h0))/sum(h0);
+        r.errors = {vmax, double(moving), hmax, double(asym)};
+        print(co, r);
+    }
+}
+
 } // namespace
 
 
 int main(int argc, char* argv[])
 {
     std::vector<double> cos{0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0};
-    std::string cases = "ABCDEF";
+    std::string cases = "ABCDEFG";
     for (int a = 1; a + 1 < argc; a += 2)
     {
         if (!std::strcmp(argv[a], "-co"))
@@ -476,5 +533,6 @@ int main(int argc, char* argv[])
     if (cases.find('D') != std::string::npos) { caseD(cos); }
     if (cases.find('E') != std::string::npos) { caseE(cos); }
     if (cases.find('F') != std::string::npos) { caseF(cos); }
+    if (cases.find('G') != std::string::npos) { caseG(cos); }
     return 0;
 }
