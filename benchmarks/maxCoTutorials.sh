@@ -147,7 +147,7 @@ do
         ok=yes
         (cd "$dir" && SH_SHORT=$short ./Allrun > "$dir.Allrun.log" 2>&1) || ok=no
         grep -rlq "FOAM FATAL" --include='log.*' "$dir" && ok=no
-        grep -rliq "nan" --include='log.savageHutterFoam*' "$dir" && ok=no
+        grep -rliqw "nan" --include='log.savageHutterFoam*' "$dir" && ok=no
         steps=0
         clips=0
         while IFS= read -r log
