@@ -65,6 +65,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "testing.H"
+#include "exactCap.H"
 
 #include <chrono>
 #include <functional>
@@ -75,113 +76,6 @@ using namespace shtest;
 
 namespace
 {
-
-// * * * * * * * * * * * * * * Exact cell averages * * * * * * * * * * * * //
-
-//- Mean of f over [a, b], split at the break points inside it, Simpson's
-//  rule on each piece: exact for a continuous f that is a cubic between
-//  break points (h and hu of both exact solutions below)
-double cellMean
-(
-    const std::function<double(double)>& f,
-    double a,
-    double b,
-    std::initializer_list<double> breaks
-)
-{
-    std::vector<double> x{a};
-    for (const double xb : breaks)
-    {
-        if (xb > a && xb < b) { x.push_back(xb); }
-    }
-    x.push_back(b);
-    std::sort(x.begin(), x.end());
-    double s = 0;
-    for (std::size_t k = 0; k + 1 < x.size(); ++k)
-    {
-        const double x0 = x[k], x1 = x[k + 1];
-        s += (x1 - x0)/6*(f(x0) + 4*f(0.5*(x0 + x1)) + f(x1));
-    }
-    return s/(b - a);
-}
-
-
-// * * * * * * * * * * * * The spreading parabolic cap  * * * * * * * * * * //
-
-//- Savage & Hutter (1989) similarity solution on a constant slope, in the
-//  dimensional form of docs/design.md section 2 (zb = 0, kappa = 0, v = 0):
-//      h  = H(t) (1 - xi^2),  xi = (x - xc(t))/G(t),  |xi| <= 1
-//      u  = uc(t) + (x - xc(t)) G'(t)/G(t)
-//      xc' = uc,  uc' = a = g (sin zeta - tan delta cos zeta)
-//      H G = M (constant),  G'' = 2 beta M/G^2,  beta = eps g cos zeta Kx_act
-struct CapState
-{
-    double t, xc, uc, G, Gdot, H;
-};
-
-struct ParabolicCap
-{
-    double a = 0, beta = 0;             // downslope acceleration, eps g cos zeta Kx
-    double xc0 = 0, uc0 = 0, G0 = 0, Gdot0 = 0, H0 = 0;
-
-    double M() const { return H0*G0; }
-
-    //- The state at time t: xc, uc in closed form, (G, G') by classical
-    //  RK4 with n steps.  minRear: the smallest rear-edge speed uc - G' met.
-    //  theta: int_0^t sqrt(beta H)/G dt (trapezoidal), the angle by which
-    //  xi = sin(theta') of a characteristic leaving an edge turns inwards.
-    CapState at
-    (
-        double t,
-        int n,
-        double* minRear = nullptr,
-        double* theta = nullptr
-    ) const
-    {
-        const double k = 2*beta*M();
-        double G = G0, V = Gdot0;
-        const double dt = t/n;
-        double rear = uc0 - Gdot0;
-        double th = 0;
-        const auto rate = [&](double g) { return std::sqrt(beta*M()/g)/g; };
-        for (int s = 0; s < n; ++s)
-        {
-            const double rate0 = rate(G);
-            const double g1 = V, v1 = k/(G*G);
-            const double G2 = G + 0.5*dt*g1, V2 = V + 0.5*dt*v1;
-            const double g2 = V2, v2 = k/(G2*G2);
-            const double G3 = G + 0.5*dt*g2, V3 = V + 0.5*dt*v2;
-            const double g3 = V3, v3 = k/(G3*G3);
-            const double G4 = G + dt*g3, V4 = V + dt*v3;
-            const double g4 = V4, v4 = k/(G4*G4);
-            G += dt/6*(g1 + 2*g2 + 2*g3 + g4);
-            V += dt/6*(v1 + 2*v2 + 2*v3 + v4);
-            rear = std::min(rear, uc0 + a*(s + 1)*dt - V);
-            th += 0.5*dt*(rate0 + rate(G));
-        }
-        if (minRear) { *minRear = rear; }
-        if (theta) { *theta = th; }
-        return {t, xc0 + uc0*t + 0.5*a*t*t, uc0 + a*t, G, V, M()/G};
-    }
-
-    //- G'^2/2 + 2 beta M/G, constant along the exact solution
-    double energy(const CapState& s) const
-    {
-        return 0.5*s.Gdot*s.Gdot + 2*beta*M()/s.G;
-    }
-
-    static double h(const CapState& s, double x)
-    {
-        const double xi = (x - s.xc)/s.G;
-        return std::fabs(xi) < 1 ? s.H*(1 - xi*xi) : 0;
-    }
-
-    static double hu(const CapState& s, double x)
-    {
-        return h(s, x)*(s.uc + (x - s.xc)*s.Gdot/s.G);
-    }
-};
-
 
 // * * * * * * * * * * * * * * One-dimensional runs * * * * * * * * * * * * //
 
