@@ -10,6 +10,8 @@
 #     select: writeFields (hMax UMax), restartInterval 0.2: 0.1 and 0.3 hold
 #       hMax and UMax only (and uniform/), 0.2, 0.4 and the last, 0.5, the
 #       restart fields too; the fields written equal all's byte for byte;
+#       avalancheSurface refuses a time without h, naming -time, and
+#       converts the restart times;
 #     restart: from 0.2 of select to 0.5: h, U, hU, hMax of 0.5 equal all's
 #       byte for byte (the restart fields are what an exact restart needs);
 #     lastOnly: writeFields without restartInterval: only 0.5 has them;
@@ -136,6 +138,22 @@ diff="$(sameFiles "$all" "$sel" 0.1 hMax UMax)$(sameFiles "$all" "$sel" 0.3 hMax
 [ -z "$diff" ] \
     && pass "select: the fields written equal the full run's byte for byte (0.1, 0.3, 0.5)" \
     || fail "select: $diff differs from the full run's"
+
+# avalancheSurface on a case with writeFields: refused at 0.1 with the
+# hint, converts the restart times
+(cd "$sel" && avalancheSurface > log.surfaceAll 2>&1)
+rcAll=$?
+(cd "$sel" && avalancheSurface -time '0.2,0.4' > log.surface 2>&1)
+rcSome=$?
+if [ $rcAll -ne 0 ] && grep -q "No field h in .*0.1" "$sel/log.surfaceAll" \
+    && grep -q "choose those with -time <ranges> or -latestTime" "$sel/log.surfaceAll" \
+    && [ $rcSome -eq 0 ] && [ -f "$sel/postProcessing/avalancheSurface/surface_0.2.vtp" ] \
+    && [ -f "$sel/postProcessing/avalancheSurface/surface_0.4.vtp" ]
+then
+    pass "select: avalancheSurface refuses 0.1 (no h) naming -time, and converts the restart times 0.2 and 0.4"
+else
+    fail "select: avalancheSurface: exit $rcAll ($(grep -m1 "No field" "$sel/log.surfaceAll")), with -time 0.2,0.4 exit $rcSome"
+fi
 
 # restart from 0.2
 rs="$work/restart"

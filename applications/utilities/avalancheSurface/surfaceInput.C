@@ -263,12 +263,20 @@ void checkTimes(const fvMesh& mesh, const instantList& chosen)
         {
             FatalErrorInFunction
                 << "No field h in " << mesh.time().path()/t.name() << nl
+                << "The surface needs h and U at every time it converts;"
+                << " a case that writes only some fields (writeFields in"
+                << " system/controlDict) has them at its restart times:"
+                << " choose those with -time <ranges> or -latestTime" << nl
                 << exit(FatalError);
         }
         if (!hasField<volVectorField>(mesh, t.name(), "U"))
         {
             FatalErrorInFunction
                 << "No field U in " << mesh.time().path()/t.name() << nl
+                << "The surface needs h and U at every time it converts;"
+                << " a case that writes only some fields (writeFields in"
+                << " system/controlDict) has them at its restart times:"
+                << " choose those with -time <ranges> or -latestTime" << nl
                 << exit(FatalError);
         }
     }
