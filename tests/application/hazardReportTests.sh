@@ -16,6 +16,9 @@
 #         its comment line "# key [unit] ...", with outflowVolume and
 #         reachesBoundary; reachesBoundary 0 on the full chute (the flow
 #         stops on the fan) and 1 on the chute cut at 700 m along the axis;
+#         volumes to at most 10 significant digits, outflowVolume exactly
+#         0 on the full chute (the sums' round-off clamped), the log's
+#         released volume the report's;
 #     (d) savageHutterFoam -ensemble (delta 19 and 24) on the full chute:
 #         ensemble/report.dat's runoutX, runoutY, runoutZ, travelAngle and
 #         reachesBoundary of each member equal (1e-6 m, 1e-6 deg)
@@ -122,6 +125,20 @@ print(("PASS  " if ok else "FAIL  ") + "(c) report.dat: %d keys each with its un
       "reachesBoundary %s on the full chute (runoutX %.1f m), outflowVolume %.3g m^3%s"
       % (len(rep), rep.get("reachesBoundary"), rep.get("runoutX", float("nan")),
          rep.get("outflowVolume", float("nan")), "; bad: %s" % bad if bad else ""))
+# the volumes to 10 significant digits, an outflow of round-off written as 0
+# (nothing leaves the full chute), the log's released volume the report's
+raw = {l.split()[0]: l.split()[1] for l in lines if l.strip() and not l.startswith("#")}
+def digits(v):
+    return len(v.lower().split("e")[0].replace("-", "").replace(".", "").lstrip("0"))
+vols = ["releasedVolume", "depositVolume", "outflowVolume"]
+log = open(f"{out}/../../../log.hazardMaps").read()
+logged = [l for l in log.splitlines() if "Released volume" in l]
+ok = (all(k in raw and digits(raw[k]) <= 10 for k in vols) and raw.get("outflowVolume") == "0"
+      and any(("Released volume %s m^3" % raw.get("releasedVolume")) in l for l in logged))
+print(("PASS  " if ok else "FAIL  ") + "(c) volumes to at most 10 significant digits (%s), "
+      "outflowVolume '%s' (round-off clamped to 0), the log: %s"
+      % (", ".join("%s %s" % (k, raw.get(k)) for k in vols), raw.get("outflowVolume"),
+         logged[0].strip() if logged else "no 'Released volume' line"))
 PYEOF
 )"
         tally $? "$checks" "(b), (c)"
@@ -189,11 +206,18 @@ for r in rows:
     m = int(r["member"])
     out = f"{ens}/ensemble/member{m:04d}/postProcessing/hazardMaps"
     t = max(os.listdir(out), key=float)
-    rep = {}
+    rep, raw = {}, {}
     for line in open(f"{out}/{t}/report.dat"):
         if line.strip() and not line.startswith("#"):
             k, v = line.split()
-            rep[k] = float(v)
+            rep[k], raw[k] = float(v), v
+    if plan:
+        # the plan report's volumes to 10 digits (not 15), no outflow yet
+        mant = raw.get("releasedVolume", "").lower().split("e")[0].replace(".", "").lstrip("0")
+        ok = 0 < len(mant) <= 10 and raw.get("outflowVolume") == "0"
+        print(("PASS  " if ok else "FAIL  ") + "(d) %s, member %d: hazardMaps' plan report: "
+              "releasedVolume %s, outflowVolume %s (10 digits, round-off clamped)"
+              % (what, m, raw.get("releasedVolume"), raw.get("outflowVolume")))
     diffs = {k: abs(float(r.get(k, "nan")) - rep.get(k, float("nan"))) for k in
              ["runoutX", "runoutY", "runoutZ", "travelAngle", "reachesBoundary"]}
     far = (math.hypot(rep.get("runoutX", 0), rep.get("runoutY", 0)) if plan

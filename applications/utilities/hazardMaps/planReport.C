@@ -302,9 +302,10 @@ void writePlanReport
         << " J = sqrt(1 + |grad zb|^2)" << nl
         << "# lines 'key value'; each key's unit and meaning on the"
         << " comment line above it" << nl;
-    writeKey(report, "releasedVolume", "m^3",
+    const scalar outflow = outflowVolume(released, deposit);
+    writeVolumeKey(report, "releasedVolume", "m^3",
         "sum of J h A at the first time directory", released);
-    writeKey(report, "depositVolume", "m^3",
+    writeVolumeKey(report, "depositVolume", "m^3",
         "sum of J h A at that time (in the domain)", deposit);
     writeKey(report, "runoutX", "m", "world X of the runout point (the bed"
         " of the cell with hMax > threshold horizontally furthest from the"
@@ -317,8 +318,7 @@ void writePlanReport
         " distance), highest released point to the runout point", alpha);
     writeKey(report, "comTravelAngle", "deg", "atan(dz / s) along the"
         " centre of mass' path", comAngle);
-    writeKey(report, "outflowVolume", "m^3", "releasedVolume -"
-        " depositVolume: what left the domain", released - deposit);
+    writeVolumeKey(report, "outflowVolume", "m^3", outflowWhat, outflow);
     writeKey(report, "comPathLength", "m", "s, the horizontal length of"
         " the centre of mass' path", s);
     writeKey(report, "reachesBoundary", "1", "1 if a cell of the grid's"
@@ -327,12 +327,13 @@ void writePlanReport
     if (atBoundary)
     {
         Info<< "    Warning: the flow reaches the domain's boundary"
-            << " (reachesBoundary 1; outflowVolume " << released - deposit
-            << " m^3)" << nl;
+            << " (reachesBoundary 1; outflowVolume "
+            << volumeText(outflow).c_str() << " m^3)" << nl;
     }
-    Info<< "    Released volume " << released << " m^3, at time "
-        << now.name() << " " << deposit << " m^3 in the domain, "
-        << released - deposit << " m^3 left it" << nl
+    Info<< "    Released volume " << volumeText(released).c_str()
+        << " m^3, at time " << now.name() << " "
+        << volumeText(deposit).c_str() << " m^3 in the domain, "
+        << volumeText(outflow).c_str() << " m^3 left it" << nl
         << "    Runout point (" << r.point[0] << " " << r.point[1] << " "
         << r.point[2] << "), travel angle " << alpha << " deg" << nl
         << "    Centre of mass: path of " << path.points.size()
