@@ -13,7 +13,9 @@
 #     terrainToCase keeps every file the user has (a marker put into each
 #     survives, nothing "Wrote ... it was missing").  The commented sample
 #     etc/caseDicts/terrainDict, its dem and polygon set for this DEM, makes
-#     a case (the plan mode).  An axis drawn uphill is refused with its
+#     a case (the plan mode) that runs to rest as the README's first case
+#     (blockMesh, savageHutterFoam, hazardMaps: runout downhill of the
+#     release).  An axis drawn uphill is refused with its
 #     elevations (nothing written); a stretch of the profile that rises is
 #     a warning with figures.  terrainToCase -help gives every keyword of
 #     terrainDict and of a release entry its own line with its range or
@@ -154,6 +156,29 @@ then
     pass "sample: etc/caseDicts/terrainDict makes a case (plan mode, with the defaults)"
 else
     fail "sample: etc/caseDicts/terrainDict did not make a case (see $s/log.terrainToCase)"
+fi
+# ... and runs to rest as the README's first case does (blockMesh,
+# savageHutterFoam, hazardMaps): the end of run at rest before endTime, a
+# report whose runout lies downhill of the release (travelAngle > 0, the
+# runout beyond the polygon's X = 1030)
+if [ -f "$s/0/h" ] && (cd "$s" && blockMesh > log.blockMesh 2>&1 \
+        && savageHutterFoam > log.savageHutterFoam 2>&1 \
+        && hazardMaps > log.hazardMaps 2>&1)
+then
+    endLine="$(grep '^End of run at t = ' "$s/log.savageHutterFoam")"
+    last="$(timeDirs "$s" | tail -n 1)"
+    r="$s/postProcessing/hazardMaps/$last/report.dat"
+    runX="$(awk '$1 == "runoutX" {print $2}' "$r" 2>/dev/null)"
+    angle="$(awk '$1 == "travelAngle" {print $2}' "$r" 2>/dev/null)"
+    if [[ "$endLine" == "End of run at t = $last s: at rest ("*")" ]] \
+        && $python -c "import sys; sys.exit(0 if float('${runX:-nan}') > 1030 and float('${angle:-nan}') > 0 else 1)"
+    then
+        pass "sample: runs to rest in plan coordinates ('$endLine'), hazardMaps: runoutX $runX m, travelAngle $angle deg"
+    else
+        fail "sample: final line '$endLine', runoutX '$runX', travelAngle '$angle' (see $s/log.*)"
+    fi
+else
+    fail "sample: blockMesh, savageHutterFoam or hazardMaps failed (see $s/log.*)"
 fi
 
 # 4. An axis drawn bottom to top is refused with the figures and nothing
