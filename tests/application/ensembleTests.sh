@@ -30,6 +30,9 @@
 #       - a terrain ensemble (terrainChute on 40 m cells): hazardMaps
 #         -statistics writes every statistic as .asc and .tif, each pixel
 #         a value of its field;
+#       - the log: every progress line counts to endTime, the last at
+#         100 % ending with "end", then "End of run at t = 2 s: endTime
+#         (every member)";
 #       - bad ensembleDicts: each exits non-zero with a FOAM FATAL message
 #         naming the problem, no stack trace, and writes nothing (no
 #         ensemble/).
@@ -116,6 +119,28 @@ then
 else
     tail -n 20 "$main/log.ensemble"
     fail "-ensemble run (exit $rc; log above)"
+fi
+
+# The log: every progress line counts to endTime ("Time = t (slowest
+# member, N% of endTime 2), next write w, steps per member a .. b  ETA
+# h:mm:ss"), the last one at t = 2, 100 %, ending with "end" as a single
+# run's, then "End of run at t = 2 s: endTime ..."
+progress='^Time = [0-9.e+-]+ \(slowest member, [0-9]+% of endTime 2\), next write [0-9.e+-]+, steps per member [0-9]+ \.\. [0-9]+  (ETA [0-9:]+|end)$'
+nProgress="$(grep -c '^Time = ' "$main/log.ensemble")"
+nGood="$(grep -cE "$progress" "$main/log.ensemble")"
+lastProgress="$(grep '^Time = ' "$main/log.ensemble" | tail -n 1)"
+nEnd="$(grep -c '  end$' "$main/log.ensemble")"
+endLine="$(grep '^End of run' "$main/log.ensemble")"
+if [ "$nProgress" -gt 1 ] && [ "$nGood" = "$nProgress" ] \
+    && [[ "$lastProgress" == "Time = 2 (slowest member, 100% of endTime 2), next write 2,"*"  end" ]] \
+    && [ "$nEnd" = 1 ] \
+    && [ "$endLine" = "End of run at t = 2 s: endTime (every member)" ] \
+    && [ "$(grep -n '^End of run' "$main/log.ensemble" | cut -d: -f1)" -gt \
+         "$(grep -n '  end$' "$main/log.ensemble" | cut -d: -f1)" ]
+then
+    pass "-ensemble log: $nProgress progress lines to endTime, the last '$lastProgress', then '$endLine'"
+else
+    fail "-ensemble log: $nGood of $nProgress progress lines in the format, $nEnd ending with 'end', last '$lastProgress', final line '$endLine'"
 fi
 
 # The statistics and a member open as cases (links to constant/, system/)

@@ -16,10 +16,17 @@
 #         its comment line "# key [unit] ...", with outflowVolume and
 #         reachesBoundary; reachesBoundary 0 on the full chute (the flow
 #         stops on the fan) and 1 on the chute cut at 700 m along the axis;
+#         volumes to at most 10 significant digits, outflowVolume exactly
+#         0 on the full chute (the sums' round-off clamped), the log's
+#         released volume the report's;
 #     (d) savageHutterFoam -ensemble (delta 19 and 24) on the full chute:
 #         ensemble/report.dat's runoutX, runoutY, runoutZ, travelAngle and
 #         reachesBoundary of each member equal (1e-6 m, 1e-6 deg)
-#         hazardMaps -case ensemble/member<k> at the same time;
+#         hazardMaps -case ensemble/member<k> at the same time, and the
+#         report's header names its definition and coordinates; the same
+#         in plan coordinates (terrainToCase without an axis, delta 20 and
+#         26, endTime 4) on a DEM whose corner lies at (100000, 200000), so
+#         that the world's coordinates are not the mesh's;
 #     (e) plotHazardMaps writes its PNG (a PNG signature, > 20 kB) on the
 #         axis case, and refuses (non-zero, no PNG) a case without
 #         hazardMaps output.
@@ -118,6 +125,20 @@ print(("PASS  " if ok else "FAIL  ") + "(c) report.dat: %d keys each with its un
       "reachesBoundary %s on the full chute (runoutX %.1f m), outflowVolume %.3g m^3%s"
       % (len(rep), rep.get("reachesBoundary"), rep.get("runoutX", float("nan")),
          rep.get("outflowVolume", float("nan")), "; bad: %s" % bad if bad else ""))
+# the volumes to 10 significant digits, an outflow of round-off written as 0
+# (nothing leaves the full chute), the log's released volume the report's
+raw = {l.split()[0]: l.split()[1] for l in lines if l.strip() and not l.startswith("#")}
+def digits(v):
+    return len(v.lower().split("e")[0].replace("-", "").replace(".", "").lstrip("0"))
+vols = ["releasedVolume", "depositVolume", "outflowVolume"]
+log = open(f"{out}/../../../log.hazardMaps").read()
+logged = [l for l in log.splitlines() if "Released volume" in l]
+ok = (all(k in raw and digits(raw[k]) <= 10 for k in vols) and raw.get("outflowVolume") == "0"
+      and any(("Released volume %s m^3" % raw.get("releasedVolume")) in l for l in logged))
+print(("PASS  " if ok else "FAIL  ") + "(c) volumes to at most 10 significant digits (%s), "
+      "outflowVolume '%s' (round-off clamped to 0), the log: %s"
+      % (", ".join("%s %s" % (k, raw.get(k)) for k in vols), raw.get("outflowVolume"),
+         logged[0].strip() if logged else "no 'Released volume' line"))
 PYEOF
 )"
         tally $? "$checks" "(b), (c)"
@@ -148,61 +169,166 @@ else
 fi
 
 # (d) the ensemble's report = hazardMaps on each member
-ens="$work/ensemble"
-if makeCase "$ens" 1950
-then
-    cat > "$ens/system/ensembleDict" <<'EOF'
+
+#- compareEnsemble <case> <what> <min distance> <plan 0/1>: each member's row
+#  of ensemble/report.dat against hazardMaps -case ensemble/member<k>, the
+#  runout's distance (from the world's origin in plan, else runoutX) above
+#  the minimum, and the report's header naming its definition
+compareEnsemble()
+{
+    local ens="$1" what="$2" minRun="$3" plan="$4" m checks
+    for m in 0 1
+    do
+        (cd "$ens" && hazardMaps -case "ensemble/member000$m" \
+            > "log.hazardMaps.$m" 2>&1) \
+            || fail "(d) $what: hazardMaps -case ensemble/member000$m failed (see $ens/log.hazardMaps.$m)"
+    done
+    checks="$($python - "$ens" "$what" "$minRun" "$plan" <<'PYEOF'
+import math, os, sys
+ens, what, minRun, plan = sys.argv[1], sys.argv[2], float(sys.argv[3]), sys.argv[4] == "1"
+rows, head = [], []
+for line in open(f"{ens}/ensemble/report.dat"):
+    if line.startswith("# member"):
+        header = line[2:].split()
+    elif line.startswith("#"):
+        head.append(line.strip())
+    elif line.strip():
+        rows.append(dict(zip(header, line.split())))
+text = " ".join(head)
+if plan:
+    ok = ("horizontally furthest" in text and "world (the plan grid" in text
+          and "unfolded inclination" not in text)
+else:
+    ok = "furthest along the slope" in text and "world (constant/terrainMapping)" in text
+print(("PASS  " if ok else "FAIL  ") + "(d) %s: the header names the definition and the "
+      "coordinates: %s" % (what, " | ".join(head[1:3])))
+for r in rows:
+    m = int(r["member"])
+    out = f"{ens}/ensemble/member{m:04d}/postProcessing/hazardMaps"
+    t = max(os.listdir(out), key=float)
+    rep, raw = {}, {}
+    for line in open(f"{out}/{t}/report.dat"):
+        if line.strip() and not line.startswith("#"):
+            k, v = line.split()
+            rep[k], raw[k] = float(v), v
+    if plan:
+        # the plan report's volumes to 10 digits (not 15), no outflow yet
+        mant = raw.get("releasedVolume", "").lower().split("e")[0].replace(".", "").lstrip("0")
+        ok = 0 < len(mant) <= 10 and raw.get("outflowVolume") == "0"
+        print(("PASS  " if ok else "FAIL  ") + "(d) %s, member %d: hazardMaps' plan report: "
+              "releasedVolume %s, outflowVolume %s (10 digits, round-off clamped)"
+              % (what, m, raw.get("releasedVolume"), raw.get("outflowVolume")))
+    diffs = {k: abs(float(r.get(k, "nan")) - rep.get(k, float("nan"))) for k in
+             ["runoutX", "runoutY", "runoutZ", "travelAngle", "reachesBoundary"]}
+    far = (math.hypot(rep.get("runoutX", 0), rep.get("runoutY", 0)) if plan
+           else rep.get("runoutX", 0))
+    ok = all(d <= 1e-6 for d in diffs.values()) and far > minRun
+    print(("PASS  " if ok else "FAIL  ") + "(d) %s, member %d (delta %s): ensemble runout "
+          "(%s, %s, %s), travel angle %s deg; hazardMaps at t = %s (%.15g, %.15g, %.15g), "
+          "%.15g deg; largest difference %s" % (what, m, r["CoulombCoeffs/delta"],
+          r["runoutX"], r["runoutY"], r.get("runoutZ"), r["travelAngle"], t,
+          rep.get("runoutX", math.nan), rep.get("runoutY", math.nan),
+          rep.get("runoutZ", math.nan), rep.get("travelAngle", math.nan),
+          max(diffs.values())))
+if len(rows) != 2:
+    print("FAIL  (d) %s: %d members in ensemble/report.dat, not 2" % (what, len(rows)))
+PYEOF
+)"
+    tally $? "$checks" "(d) $what"
+}
+
+#- ensembleDict <case> <deltas>
+ensembleDict()
+{
+    cat > "$1/system/ensembleDict" <<EOF
 FoamFile { version 2.0; format ascii; class dictionary; object ensembleDict; }
-parameters { "CoulombCoeffs/delta" (19 24); }
+parameters { "CoulombCoeffs/delta" ($2); }
 combine         product;
 thresholds      (0.1);
 percentiles     (50);
 runoutThreshold 0.01;
 EOF
+}
+
+ens="$work/ensemble"
+if makeCase "$ens" 1950
+then
+    ensembleDict "$ens" "19 24"
     if (cd "$ens" && savageHutterFoam -ensemble > log.ensemble 2>&1)
     then
-        for m in 0 1
-        do
-            (cd "$ens" && hazardMaps -case "ensemble/member000$m" \
-                > "log.hazardMaps.$m" 2>&1) \
-                || fail "(d) hazardMaps -case ensemble/member000$m failed (see $ens/log.hazardMaps.$m)"
-        done
-        checks="$($python - "$ens" <<'PYEOF'
-import os, sys
-ens = sys.argv[1]
-rows = []
-for line in open(f"{ens}/ensemble/report.dat"):
-    if line.startswith("# member"):
-        header = line[2:].split()
-    elif not line.startswith("#") and line.strip():
-        rows.append(dict(zip(header, line.split())))
-for r in rows:
-    m = int(r["member"])
-    out = f"{ens}/ensemble/member{m:04d}/postProcessing/hazardMaps"
-    t = max(os.listdir(out), key=float)
-    rep = {}
-    for line in open(f"{out}/{t}/report.dat"):
-        if line.strip() and not line.startswith("#"):
-            k, v = line.split()
-            rep[k] = float(v)
-    diffs = {k: abs(float(r.get(k, "nan")) - rep.get(k, float("nan"))) for k in
-             ["runoutX", "runoutY", "runoutZ", "travelAngle", "reachesBoundary"]}
-    ok = all(d <= 1e-6 for d in diffs.values()) and rep.get("runoutX", 0) > 500
-    print(("PASS  " if ok else "FAIL  ") + "(d) member %d (delta %s): ensemble runout (%s, %s, %s), "
-          "travel angle %s deg; hazardMaps at t = %s (%.10g, %.10g, %.10g), %.10g deg; "
-          "largest difference %s" % (m, r["CoulombCoeffs/delta"], r["runoutX"], r["runoutY"],
-          r.get("runoutZ"), r["travelAngle"], t, rep["runoutX"], rep["runoutY"], rep["runoutZ"],
-          rep["travelAngle"], max(diffs.values())))
-if len(rows) != 2:
-    print("FAIL  (d) %d members in ensemble/report.dat, not 2" % len(rows))
-PYEOF
-)"
-        tally $? "$checks" "(d)"
+        compareEnsemble "$ens" "axis" 500 0
     else
         fail "(d) savageHutterFoam -ensemble failed (see $ens/log.ensemble)"
     fi
 else
     fail "(d) the ensemble case could not be made (see $ens)"
+fi
+
+# (d) in plan coordinates: terrainToCase without an axis, on a DEM whose
+# corner lies at (100000, 200000), so that the world's coordinates are not
+# the mesh's: a 35 deg slope whose descent is turned by 30 deg from the
+# columns, rounded into a floor (2 m pixels, 4 m cells, 42 x 30 cells)
+plan="$work/planEnsemble"
+mkdir -p "$plan/system" "$plan/constant"
+$python - "$plan/constant/dem.asc" <<'PYEOF'
+import math, sys
+nx, ny, d, x0, y0 = 84, 60, 2.0, 100000.0, 200000.0
+t = math.tan(math.radians(35))
+c, s = math.cos(math.radians(30)), math.sin(math.radians(30))
+def z(X, Y):
+    a = (X - x0)*c + (Y - y0)*s - 10
+    if a < 90:
+        zs = -t*a
+    elif a < 130:
+        zs = -t*90 - t*(a - 90) + t*(a - 90)**2/80
+    else:
+        zs = -t*110
+    return 1000 + zs
+with open(sys.argv[1], "w") as o:
+    o.write(f"ncols {nx}\nnrows {ny}\nxllcorner {x0}\nyllcorner {y0}\n"
+            f"cellsize {d}\nNODATA_value -9999\n")
+    for j in range(ny):
+        Y = y0 + (ny - j - 0.5)*d
+        o.write(" ".join("%.17g" % z(x0 + (i + 0.5)*d, Y) for i in range(nx)) + "\n")
+PYEOF
+cat > "$plan/system/terrainDict" <<'EOF'
+FoamFile { version 2.0; format ascii; class dictionary; object terrainDict; }
+dem             "constant/dem.asc";
+cellSize        4;
+release
+{
+    r1
+    {
+        polygon     ((100020 200036) (100048 200036) (100048 200064) (100020 200064));
+        thickness   1;
+        thicknessDirection vertical;
+    }
+}
+EOF
+cat > "$plan/constant/transportProperties" <<'EOF'
+FoamFile { version 2.0; format ascii; class dictionary; object transportProperties; }
+g               9.81;
+coordinates     plan;
+earthPressure   activePassive;
+phi             35;
+rho             1500;
+frictionModel   Coulomb;
+CoulombCoeffs   { delta 24; }
+EOF
+ensembleDict "$plan" "20 26"
+if (cd "$plan" && terrainToCase > log.terrainToCase 2>&1 \
+        && blockMesh > log.blockMesh 2>&1 \
+        && setEntry system/controlDict endTime 4 \
+        && setEntry system/controlDict writeInterval 2)
+then
+    if (cd "$plan" && savageHutterFoam -ensemble -backend cpu > log.ensemble 2>&1)
+    then
+        compareEnsemble "$plan" "plan, DEM corner (100000, 200000)" 100000 1
+    else
+        fail "(d) plan: savageHutterFoam -ensemble failed (see $plan/log.ensemble)"
+    fi
+else
+    fail "(d) plan: the case could not be made (see $plan/log.*)"
 fi
 
 # (e) plotHazardMaps

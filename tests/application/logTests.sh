@@ -33,6 +33,10 @@
 #       "at rest (kineticEnergyStop 0.01)"; the last progress line has no
 #       ETA but "end", and at the steady state moving = 0, maxSpeed = 0 and
 #       movingVol = 0 (kineticEnergyStop ends with a little still moving).
+#     gone: a box released on the 40 deg slope (delta 5) flows out of the
+#       short domain's open end: "End of run at t = <t> s: no material left
+#       in the domain (no cell with h > hDry; steadyStateTolerance
+#       0.0001)", not "at rest", after a last progress line with wet = 0.
 #     sigterm: the accelerating layer, SIGTERM after its first progress
 #       line: "End of run at t = <the t of Stopped by SIGTERM> s: SIGTERM
 #       (signal)" follows the stop, and no progress line with an ETA comes
@@ -239,6 +243,38 @@ do
         fail "$name: the run failed (see $log)"
     fi
 done
+
+# 2b. gone: a box of 0.5 m on the 40 deg slope with delta 5 and open ends
+# flows out of the short domain (12 m, 48 x 4 cells) before endTime 20:
+# the run ends at the steady-state check with no cell wet, and says so
+gone="$work/gone"
+if makeCase "$gone" 48 4 -6 6 -1 1 && (
+        cd "$gone" || exit 1
+        sed -i 's/damBreak { position 0; upstream 10; downstream 0; }/box { min (-2 -2); max (0 2); value 0.5; }/' \
+            system/setAvalancheFieldsDict
+        grep -q 'box {' system/setAvalancheFieldsDict || exit 1
+        sed -i 's/delta       24.5;/delta       5;/' constant/transportProperties
+        setEntry system/controlDict endTime 20
+        setEntry system/controlDict writeInterval 0.5
+        foamDictionary system/fvSolution -entry savageHutter/steadyStateTolerance -set 1e-4 > /dev/null
+        postProcess -func writeCellCentres -time 0 > log.postProcess 2>&1
+        setAvalancheFields > log.setAvalancheFields 2>&1 || exit 1
+        savageHutterFoam -backend cpu -logInterval 0.1 > log.savageHutterFoam 2>&1
+    )
+then
+    log="$gone/log.savageHutterFoam"
+    endLine="$(grep '^End of run at t = ' "$log")"
+    last="$(grep '^Time = ' "$log" | tail -n1)"
+    if [[ "$endLine" == "End of run at t = "*" s: no material left in the domain (no cell with h > hDry; steadyStateTolerance 0.0001)" ]] \
+        && [[ "$last" == *"  wet = 0  "*"  end" ]] && ! grep -q 'at rest' <<< "$endLine"
+    then
+        pass "gone: '$endLine'; the last progress line: '${last#*volume = }'"
+    else
+        fail "gone: final line '$endLine', last progress line '$last' (see $log)"
+    fi
+else
+    fail "gone: the run failed (see $gone)"
+fi
 
 # 3. sigterm: stopped after its first progress line
 sg="$work/sigterm"

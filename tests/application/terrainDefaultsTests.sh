@@ -13,10 +13,13 @@
 #     terrainToCase keeps every file the user has (a marker put into each
 #     survives, nothing "Wrote ... it was missing").  The commented sample
 #     etc/caseDicts/terrainDict, its dem and polygon set for this DEM, makes
-#     a case (the plan mode).  An axis drawn uphill is refused with its
+#     a case (the plan mode) that runs to rest as the README's first case
+#     (blockMesh, savageHutterFoam, hazardMaps: runout downhill of the
+#     release).  An axis drawn uphill is refused with its
 #     elevations (nothing written); a stretch of the profile that rises is
-#     a warning with figures.  terrainToCase -help names every keyword of
-#     terrainDict and of a release entry.
+#     a warning with figures.  terrainToCase -help gives every keyword of
+#     terrainDict and of a release entry its own line with its range or
+#     form (a keyword's mere word elsewhere in the help does not count).
 #     Prints one line per check and "N passed, M failed, K skipped".
 #
 # Usage
@@ -154,6 +157,29 @@ then
 else
     fail "sample: etc/caseDicts/terrainDict did not make a case (see $s/log.terrainToCase)"
 fi
+# ... and runs to rest as the README's first case does (blockMesh,
+# savageHutterFoam, hazardMaps): the end of run at rest before endTime, a
+# report whose runout lies downhill of the release (travelAngle > 0, the
+# runout beyond the polygon's X = 1030)
+if [ -f "$s/0/h" ] && (cd "$s" && blockMesh > log.blockMesh 2>&1 \
+        && savageHutterFoam > log.savageHutterFoam 2>&1 \
+        && hazardMaps > log.hazardMaps 2>&1)
+then
+    endLine="$(grep '^End of run at t = ' "$s/log.savageHutterFoam")"
+    last="$(timeDirs "$s" | tail -n 1)"
+    r="$s/postProcessing/hazardMaps/$last/report.dat"
+    runX="$(awk '$1 == "runoutX" {print $2}' "$r" 2>/dev/null)"
+    angle="$(awk '$1 == "travelAngle" {print $2}' "$r" 2>/dev/null)"
+    if [[ "$endLine" == "End of run at t = $last s: at rest ("*")" ]] \
+        && $python -c "import sys; sys.exit(0 if float('${runX:-nan}') > 1030 and float('${angle:-nan}') > 0 else 1)"
+    then
+        pass "sample: runs to rest in plan coordinates ('$endLine'), hazardMaps: runoutX $runX m, travelAngle $angle deg"
+    else
+        fail "sample: final line '$endLine', runoutX '$runX', travelAngle '$angle' (see $s/log.*)"
+    fi
+else
+    fail "sample: blockMesh, savageHutterFoam or hazardMaps failed (see $s/log.*)"
+fi
 
 # 4. An axis drawn bottom to top is refused with the figures and nothing
 # written; a profile that rises for a stretch (a bump 2 m high on the
@@ -203,19 +229,32 @@ else
     fail "counter-slope: a warning on a profile that never rises"
 fi
 
-# 5. -help names every keyword
-help="$(terrainToCase -help 2>&1)"
-missing=""
-for k in dem cellSize extent axis halfWidth profileSmoothing release \
-    polygon file raster thickness thicknessDirection
-do
-    grep -qw -- "$k" <<< "$help" || missing="$missing $k"
-done
-if [ -z "$missing" ] && grep -q "etc/caseDicts/terrainDict" <<< "$help"
-then
-    pass "terrainToCase -help names every terrainDict keyword and the sample"
-else
-    fail "terrainToCase -help lacks:${missing:- the name of the sample}"
-fi
+# 5. -help: each keyword on its own line (a top-level keyword at the
+# start of its line, a release entry's after a space or ';') followed by
+# its range or form, so that a word that occurs elsewhere in the help
+# ("file", "release") does not pass for its keyword
+checks="$(terrainToCase -help 2>&1 | $python -c '
+import re, sys
+help = sys.stdin.read()
+top = [("dem", "\"<file>.asc|.tif\"  vertical elevation [m]"),
+       ("cellSize", "> 0 [m]  square cells"),
+       ("extent", "((X0 Y0) (X1 Y1))  plan mode, optional"),
+       ("axis", "((X0 Y0) (X1 Y1))  axis mode, top to bottom"),
+       ("halfWidth", "> 0 [m]  axis mode"),
+       ("profileSmoothing", ">= 0 [m]  axis mode"),
+       ("release", "{ <name> { ... } ... }")]
+entry = [("polygon", "((X Y) ...);"), ("file", "\"<.shp>\";"),
+         ("raster", "\"<.asc|.tif>\";"), ("thickness", "> 0 [m] (not with raster);"),
+         ("thicknessDirection", "vertical | normal;")]
+missing = [k for k, r in top
+           if not re.search(r"(?m)^ +" + re.escape(k) + r" +" + re.escape(r), help)]
+missing += [k for k, r in entry
+            if not re.search(r"(?m)(^ +|; +|, +)" + re.escape(k) + r" +" + re.escape(r), help)]
+ok = not missing and "etc/caseDicts/terrainDict" in help
+print(("PASS  " if ok else "FAIL  ") + "terrainToCase -help: each of the %d terrainDict and release "
+      "keywords on its own line with its range, and the sample named%s"
+      % (len(top) + len(entry), "; missing or without its range: " + " ".join(missing) if missing else ""))
+')"
+tally $? "$checks" "-help"
 
 finish

@@ -197,11 +197,14 @@ scalar pathLength(const std::vector<terrain::vec3>& p)
 
 
 //- The highest released point and the runout point: the bed point of the
-//  cell with hMax > threshold horizontally furthest from it
+//  cell with hMax > threshold horizontally furthest from it, and whether
+//  the flow reaches the grid's outermost ring (runoutDefinition.H's plan
+//  definition, shared with savageHutterFoam -ensemble's report)
 struct planRunout
 {
     terrain::vec3 top{0, 0, -GREAT};
     terrain::vec3 point{0, 0, 0};
+    bool reachesBoundary = false;
 };
 
 planRunout runoutOf
@@ -212,25 +215,23 @@ planRunout runoutOf
 {
     const volVectorField& C = h0.mesh().C();
     const volScalarField& zb = fields.zb;
+    const scalar cs = t.cellSize;
+    const runoutDefinition::result def = runoutDefinition::planRunoutOf
+    (
+        C.size(), threshold, t.nx, t.ny,
+        [&](long c) { return fields.hMax[c]; },
+        [&](long c) { return h0[c]; },
+        [&](long c) { return long(std::floor(C[c].x()/cs)); },
+        [&](long c) { return long(std::floor(C[c].y()/cs)); },
+        [&](long c) { return bedPoint(t.grid, C[c], zb[c]); }
+    );
     planRunout r;
-    forAll(C, c)
+    if (def.released)
     {
-        if (h0[c] > 0 && zb[c] > r.top[2])
-        {
-            r.top = bedPoint(t.grid, C[c], zb[c]);
-        }
+        r.top = def.top;
     }
-    scalar furthest = -1;
-    forAll(C, c)
-    {
-        const terrain::vec3 P = bedPoint(t.grid, C[c], zb[c]);
-        const scalar d = std::hypot(P[0] - r.top[0], P[1] - r.top[1]);
-        if (fields.hMax[c] > threshold && d > furthest)
-        {
-            furthest = d;
-            r.point = P;
-        }
-    }
+    r.point = def.point;
+    r.reachesBoundary = def.reachesBoundary;
     return r;
 }
 
@@ -291,25 +292,7 @@ void writePlanReport
     const scalar alpha = travelAngle(r.top, r.point);
     warnRunoutAbove(r.top, r.point);
 
-    // The flow at the domain's edge: a cell of the outermost ring of the
-    // plan grid with hMax > threshold
-    bool atBoundary = false;
-    {
-        const labelList cellOf = gridCells(h0.mesh(), mapping);
-        forAll(cellOf, k)
-        {
-            const label i = k % mapping.nx, j = k/mapping.nx;
-            if
-            (
-                (i == 0 || j == 0 || i == mapping.nx - 1
-              || j == mapping.ny - 1)
-             && cellOf[k] >= 0 && fields.hMax[cellOf[k]] > threshold
-            )
-            {
-                atBoundary = true;
-            }
-        }
-    }
+    const bool atBoundary = r.reachesBoundary;
 
     OFstream report(outDir/"report.dat");
     report.precision(15);
@@ -319,9 +302,10 @@ void writePlanReport
         << " J = sqrt(1 + |grad zb|^2)" << nl
         << "# lines 'key value'; each key's unit and meaning on the"
         << " comment line above it" << nl;
-    writeKey(report, "releasedVolume", "m^3",
+    const scalar outflow = outflowVolume(released, deposit);
+    writeVolumeKey(report, "releasedVolume", "m^3",
         "sum of J h A at the first time directory", released);
-    writeKey(report, "depositVolume", "m^3",
+    writeVolumeKey(report, "depositVolume", "m^3",
         "sum of J h A at that time (in the domain)", deposit);
     writeKey(report, "runoutX", "m", "world X of the runout point (the bed"
         " of the cell with hMax > threshold horizontally furthest from the"
@@ -334,8 +318,7 @@ void writePlanReport
         " distance), highest released point to the runout point", alpha);
     writeKey(report, "comTravelAngle", "deg", "atan(dz / s) along the"
         " centre of mass' path", comAngle);
-    writeKey(report, "outflowVolume", "m^3", "releasedVolume -"
-        " depositVolume: what left the domain", released - deposit);
+    writeVolumeKey(report, "outflowVolume", "m^3", outflowWhat, outflow);
     writeKey(report, "comPathLength", "m", "s, the horizontal length of"
         " the centre of mass' path", s);
     writeKey(report, "reachesBoundary", "1", "1 if a cell of the grid's"
@@ -344,12 +327,13 @@ void writePlanReport
     if (atBoundary)
     {
         Info<< "    Warning: the flow reaches the domain's boundary"
-            << " (reachesBoundary 1; outflowVolume " << released - deposit
-            << " m^3)" << nl;
+            << " (reachesBoundary 1; outflowVolume "
+            << volumeText(outflow).c_str() << " m^3)" << nl;
     }
-    Info<< "    Released volume " << released << " m^3, at time "
-        << now.name() << " " << deposit << " m^3 in the domain, "
-        << released - deposit << " m^3 left it" << nl
+    Info<< "    Released volume " << volumeText(released).c_str()
+        << " m^3, at time " << now.name() << " "
+        << volumeText(deposit).c_str() << " m^3 in the domain, "
+        << volumeText(outflow).c_str() << " m^3 left it" << nl
         << "    Runout point (" << r.point[0] << " " << r.point[1] << " "
         << r.point[2] << "), travel angle " << alpha << " deg" << nl
         << "    Centre of mass: path of " << path.points.size()

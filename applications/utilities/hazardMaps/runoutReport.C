@@ -6,6 +6,8 @@
 #include "OFstream.H"
 #include "unitConversion.H"
 
+#include <cstdio>
+
 namespace Foam
 {
 
@@ -124,6 +126,39 @@ void writeKey
 }
 
 
+void writeVolumeKey
+(
+    Ostream& os, const char* key, const char* unit, const char* what,
+    const scalar value
+)
+{
+    const label digits = os.precision(10);
+    writeKey(os, key, unit, what, value);
+    os.precision(digits);
+}
+
+
+std::string volumeText(const scalar v)
+{
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.10g", double(v));
+    return buf;
+}
+
+
+scalar outflowVolume(const scalar released, const scalar deposit)
+{
+    const scalar out = released - deposit;
+    return mag(out) < 1e-9*mag(released) ? 0 : out;
+}
+
+
+const char* const outflowWhat =
+    "releasedVolume - depositVolume: what left the domain (0 where its"
+    " magnitude is below 1e-9 of releasedVolume, the round-off of the"
+    " two sums)";
+
+
 void writeReport
 (
     const fileName& outDir, const word& now, scalar threshold,
@@ -145,9 +180,10 @@ void writeReport
         << threshold << " m on hMax; world coordinates of the DEM" << nl
         << "# lines 'key value'; each key's unit and meaning on the"
         << " comment line above it" << nl;
-    writeKey(report, "releasedVolume", "m^3",
+    const scalar outflow = outflowVolume(r.released, r.deposit);
+    writeVolumeKey(report, "releasedVolume", "m^3",
         "sum of h dA at the first time directory", r.released);
-    writeKey(report, "depositVolume", "m^3",
+    writeVolumeKey(report, "depositVolume", "m^3",
         "sum of h dA at that time (in the domain)", r.deposit);
     writeKey(report, "runoutX", "m", "world X of the runout point (the"
         " bed of the cell with hMax > threshold furthest along the axis)",
@@ -161,21 +197,21 @@ void writeReport
     writeKey(report, "comTravelAngle", "deg", "the same between the"
         " centres of mass of the release and of the material at that time",
         comAlpha);
-    writeKey(report, "outflowVolume", "m^3", "releasedVolume -"
-        " depositVolume: what left the domain", r.released - r.deposit);
+    writeVolumeKey(report, "outflowVolume", "m^3", outflowWhat, outflow);
     writeKey(report, "reachesBoundary", "1", "1 if a cell of the mesh's"
         " outermost ring has hMax > threshold (the flow reached the"
         " domain's edge: the runout may be cut off), else 0",
         r.def.reachesBoundary ? 1 : 0);
-    Info<< "    Released volume " << r.released << " m^3, at time "
-        << now << " " << r.deposit << " m^3" << nl
+    Info<< "    Released volume " << volumeText(r.released).c_str()
+        << " m^3, at time " << now << " "
+        << volumeText(r.deposit).c_str() << " m^3" << nl
         << "    Runout point (" << r.point[0] << " " << r.point[1] << " "
         << r.point[2] << "), travel angle " << alpha
         << " deg, centre of mass " << comAlpha << " deg" << nl;
     if (r.def.reachesBoundary)
     {
         Info<< "    Warning: the flow reaches the domain's boundary"
-            << " (reachesBoundary 1; " << r.released - r.deposit
+            << " (reachesBoundary 1; " << volumeText(outflow).c_str()
             << " m^3 left it): the runout may lie beyond the mesh" << nl;
     }
     Info<< "    Wrote " << outDir << nl << endl;

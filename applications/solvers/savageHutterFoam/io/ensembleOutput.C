@@ -15,6 +15,7 @@ Description
 // reference surface (plain C++ headers of the utilities)
 #include "../../../utilities/hazardMaps/runoutDefinition.H"
 #include "../../../utilities/terrain/referenceSurface.H"
+#include "../../../utilities/terrain/planFrame.H"
 
 #include <algorithm>
 #include <cmath>
@@ -240,15 +241,22 @@ void ensembleRun<Real>::surfacePositions(const sh::Problem<Real>& pb)
 namespace
 {
 
-//- The world position of a cell's bed: on a terrain case (axis mode) the
-//  reference surface of constant/terrainMapping, as hazardMaps places it;
-//  elsewhere the unfolded inclination (X, y, E)
+//- The world position of a cell's bed, as hazardMaps places it: on a
+//  terrain case of the axis mode the reference surface of
+//  constant/terrainMapping; in plan coordinates (coordinates plan) the
+//  plan grid's map (origin, xAxis, yAxis of constant/terrainMapping where
+//  the case has one, else the case's own x, y) and zb; elsewhere the
+//  unfolded inclination (X, y, E)
 struct bedWorld
 {
     bool terrain = false;
+    bool plan = false;
     terrain::referenceSurface surface;
+    planGrid grid{{0, 0}, {1, 0}, {0, 1}, 0, 0, 0};
 
-    explicit bedWorld(const Time& runTime)
+    bedWorld(const Time& runTime, const bool planCoordinates)
+    :
+        plan(planCoordinates)
     {
         IOobject io
         (
@@ -260,10 +268,22 @@ struct bedWorld
             return;
         }
         const IOdictionary dict(io);
+        if (plan)
+        {
+            if (dict.getOrDefault<word>("mode", "axis") == "plan")
+            {
+                const vector2D o = dict.get<vector2D>("origin");
+                const vector2D ax = dict.get<vector2D>("xAxis");
+                const vector2D ay = dict.get<vector2D>("yAxis");
+                grid.origin = {o.x(), o.y()};
+                grid.xAxis = {ax.x(), ax.y()};
+                grid.yAxis = {ay.x(), ay.y()};
+                terrain = true;
+            }
+            return;
+        }
         if (dict.getOrDefault<word>("mode", "axis") != "axis")
         {
-            // A plan case: its report is hazardMaps' plan report; here the
-            // case's own coordinates
             return;
         }
         const List<vector2D> table =
@@ -285,9 +305,9 @@ struct bedWorld
 };
 
 
-const bedWorld& worldOf(const Time& runTime)
+const bedWorld& worldOf(const Time& runTime, const bool plan)
 {
-    static const bedWorld w(runTime);
+    static const bedWorld w(runTime, plan);
     return w;
 }
 
@@ -307,6 +327,11 @@ runoutDefinition::vec3 bedPoint
     const point& P = ac.mesh.C()[c];
     const label g = ac.smesh.gridIndex(c);
     const double zb = double(pb.zb[g]);
+    if (bw.plan)
+    {
+        const std::array<double, 2> W = bw.grid.world(P.x(), P.y());
+        return {W[0], W[1], zb};
+    }
     if (bw.terrain)
     {
         return bw.surface.world(P.x(), P.y(), zb);
@@ -324,7 +349,7 @@ FixedList<double, 3> ensembleRun<Real>::releaseTop(const sh::Problem<Real>& pb) 
 {
     // The world point of the highest released bed (runoutDefinition.H),
     // Z = -1e300 when nothing is released
-    const bedWorld& bw = worldOf(runTime_);
+    const bedWorld& bw = worldOf(runTime_, ac_.input.plan());
     const volVectorField& C = ac_.mesh.C();
     const label nx = pb.grid.nx;
     const auto world = [&](long c)
@@ -362,7 +387,7 @@ void ensembleRun<Real>::writeReport()
     const double dx = double(pb0.grid.dx);
     const double dy = double(pb0.grid.dy);
     const double thr = ens_.runoutThreshold;
-    const bedWorld& bw = worldOf(runTime_);
+    const bedWorld& bw = worldOf(runTime_, ac_.input.plan());
     const volVectorField& C = ac_.mesh.C();
 
     OFstream os(runTime_.path()/"ensemble"/"report.dat");
@@ -371,13 +396,26 @@ void ensembleRun<Real>::writeReport()
         << runTime_.timeName() << nl
         << "# the definitions of hazardMaps' report (runoutDefinition.H),"
         << " threshold runoutThreshold " << thr << " m on hMax: runout"
-        << " point the bed of the cell with hMax > threshold furthest along"
-        << " the slope (x; of those the largest hMax); travel angle"
-        << " atan(drop / horizontal distance) from the highest released bed"
-        << " (h > 0 at the start) to it [deg]" << nl
+        << " point the bed of the cell with hMax > threshold "
+        << (
+               bw.plan
+             ? "horizontally furthest from the highest released bed"
+             : "furthest along the slope (x; of those the largest hMax)"
+           )
+        << "; travel angle atan(drop / horizontal distance) from the"
+        << " highest released bed (h > 0 at the start) to it [deg]" << nl
         << "# coordinates: "
         << (
-               bw.terrain
+               bw.plan
+             ? (
+                   bw.terrain
+                 ? "world (the plan grid of constant/terrainMapping: X ="
+                   " origin + x xAxis + y yAxis, Z = zb), as hazardMaps"
+                   " writes them"
+                 : "the case's plan coordinates (x, y, Z = zb; no"
+                   " constant/terrainMapping)"
+               )
+             : bw.terrain
              ? "world (constant/terrainMapping), as hazardMaps writes them"
              : "X horizontal along the unfolded inclination, Y = y,"
                " Z elevation"
@@ -402,17 +440,39 @@ void ensembleRun<Real>::writeReport()
             position(pb, i, j, E, X);
         });
         };
-        const runoutDefinition::result r = runoutDefinition::runoutOf
-        (
-            ac_.h.size(), thr, dx, nx, ny,
-            [&](long c) { return C[c].x(); },
-            [&](long c) { return double(p.h[ac_.smesh.gridIndex(c)]); },
-            [](long) { return 0.0; },
-            [&](long c) { return long(ac_.smesh.gridIndex(c) % nx); },
-            [&](long c) { return long(ac_.smesh.gridIndex(c)/nx); },
-            world
-        );
         const runoutDefinition::vec3 top{top_[k][0], top_[k][1], top_[k][2]};
+        const auto hMaxOf = [&](long c)
+        {
+            return double(p.h[ac_.smesh.gridIndex(c)]);
+        };
+        const auto iOf = [&](long c)
+        {
+            return long(ac_.smesh.gridIndex(c) % nx);
+        };
+        const auto jOf = [&](long c)
+        {
+            return long(ac_.smesh.gridIndex(c)/nx);
+        };
+        runoutDefinition::result r;
+        if (bw.plan)
+        {
+            // Horizontally furthest from the member's top of the release
+            r.released = top[2] > -1e300;
+            r.top = top;
+            runoutDefinition::planRunoutFrom
+            (
+                r, ac_.h.size(), thr, nx, ny, hMaxOf, iOf, jOf, world
+            );
+        }
+        else
+        {
+            r = runoutDefinition::runoutOf
+            (
+                ac_.h.size(), thr, dx, nx, ny,
+                [&](long c) { return C[c].x(); },
+                hMaxOf, [](long) { return 0.0; }, iOf, jOf, world
+            );
+        }
         const bool moved = top[2] > -1e300 && r.reached;
         const double angle =
             moved ? runoutDefinition::travelAngle(top, r.point) : 0;
@@ -427,12 +487,18 @@ void ensembleRun<Real>::writeReport()
         for (const scalar v : m.values) { os << ' ' << v; }
         if (ens_.variesHScale) { os << ' ' << m.hScale; }
         if (ens_.variesRelease) { os << ' ' << m.release; }
-        os  << ' ' << released_[k] << ' ' << vol << ' '
-            << (moved ? r.point[0] : 0) << ' '
+        // Volumes to 10 significant digits; the runout point and the
+        // angle to the digits of hazardMaps' report (15 in plan
+        // coordinates, whose world coordinates may be large)
+        const int digits = bw.plan ? 15 : 10;
+        os  << ' ' << released_[k] << ' ' << vol << ' ';
+        os.precision(digits);
+        os  << (moved ? r.point[0] : 0) << ' '
             << (moved ? r.point[1] : 0) << ' '
             << angle << ' ' << steps0_[k] + solver_->steps(k) << ' '
             << (moved ? r.point[2] : 0) << ' '
             << (r.reachesBoundary ? 1 : 0) << nl;
+        os.precision(10);
     }
     Info<< "Wrote " << os.name() << nl;
 }

@@ -429,9 +429,17 @@ void avalancheRun<Real>::steadyCheck(const double dt)
         ++nWet;
     }
     // Over all processors (nothing to reduce in a serial run)
+    // Whether any material is left (a cell wet now)
+    long nWetNow = 0;
+    for (std::size_t k = 0; k < hs_.size(); ++k)
+    {
+        nWetNow += double(hs_[k]) > hDry;
+    }
     reduce(sum2, sumOp<double>());
     reduce(maxRate, maxOp<double>());
     reduce(nWet, sumOp<long>());
+    reduce(nWetNow, sumOp<long>());
+    empty_ = nWetNow == 0;
     const double rms = nWet ? std::sqrt(sum2/nWet) : 0;
     hPrev_ = hs_;
     if (!steadyFile_ && Pstream::master())
@@ -578,6 +586,12 @@ std::string avalancheRun<Real>::endReason() const
             return stoppedBy_ + " (controlDict)";
         }
         return stoppedBy_ + " (signal)";
+    }
+    if (steady_ && empty_)
+    {
+        // Everything flowed out: nothing is at rest in the domain
+        return "no material left in the domain (no cell with h > hDry; "
+            + restBy_ + ")";
     }
     if (steady_)
     {

@@ -435,6 +435,31 @@ void ensembleRun<Real>::run()
     etaEstimate eta;
     eta.start(t, 0);
     const scalar tStart = t;
+    // The progress line of the slowest member; final: "end" in place of
+    // the ETA (the last line, as a single run's)
+    const auto logProgress = [&](const scalar next, const bool final)
+    {
+        long lo = solver_->steps(0), hi = lo;
+        double tMin = solver_->time(0);
+        for (label k = 1; k < n_; ++k)
+        {
+            lo = std::min(lo, solver_->steps(k));
+            hi = std::max(hi, solver_->steps(k));
+            tMin = std::min(tMin, solver_->time(k));
+        }
+        const double done = (tMin - tStart)/max(endTime - tStart, SMALL);
+        Info<< "Time = " << tMin << " (slowest member, "
+            << label(100*done) << "% of endTime " << endTime
+            << "), next write " << next
+            << ", steps per member " << lo << " .. " << hi
+            << (
+                   final
+                 ? std::string("  end")
+                 : "  ETA " + eta.text(tMin, 0, HUGE_VAL, endTime)
+               ).c_str()
+            << nl;
+        return tMin;
+    };
     while (t < endTime)
     {
         // The next write time, on the grid of a single run
@@ -452,27 +477,18 @@ void ensembleRun<Real>::run()
                     Info<< nl << runSignals::name(runSignals::last)
                         << ": the ensemble stops; its last write time"
                         << " is its restart point" << nl << endl;
+                    const scalar tMin = logProgress(next, true);
+                    Info<< "End of run at t = " << tMin << " s: "
+                        << runSignals::name(runSignals::last)
+                        << " (signal; the last write time " << t
+                        << " s is the restart point)" << nl;
                     return;
                 }
                 Info<< runSignals::name(runSignals::last)
                     << ": an ensemble writes at its write times only"
                     << nl;
             }
-            long lo = solver_->steps(0), hi = lo;
-            double tMin = solver_->time(0);
-            for (label k = 1; k < n_; ++k)
-            {
-                lo = std::min(lo, solver_->steps(k));
-                hi = std::max(hi, solver_->steps(k));
-                tMin = std::min(tMin, solver_->time(k));
-            }
-            const double done = (tMin - tStart)/max(endTime - tStart, SMALL);
-            Info<< "Time = " << tMin << " (slowest member, "
-                << label(100*done) << "% of endTime " << endTime
-                << "), next write " << next
-                << ", steps per member " << lo << " .. " << hi
-                << "  ETA " << eta.text(tMin, 0, HUGE_VAL, endTime).c_str()
-                << nl;
+            logProgress(next, reached && next >= endTime);
         }
         stepping +=
             std::chrono::duration<double>(clock::now() - t0).count();
@@ -482,6 +498,10 @@ void ensembleRun<Real>::run()
         Info<< "Wrote t = " << runTime_.timeName() << ": " << n_
             << " members and the statistics" << nl << endl;
     }
+    // As a single run's last line of the time loop (an ensemble has no
+    // steady-state stop: each member runs to endTime)
+    Info<< "End of run at t = " << t << " s: endTime (every member)" << nl
+        << endl;
     writeReport();
     const double cells = double(ac_.h.size());
     label steps = 0;   // in this run
