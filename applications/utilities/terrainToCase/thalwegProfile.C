@@ -212,7 +212,14 @@ chuteGrid gridOnProfile
     g.xMax = g.nx*cellSize;
     g.yMax = 0.5*g.ny*cellSize;
     const std::vector<double>& zeta = profile.zetaDeg;
-    Info<< "Axis " << axis.points << ": " << axis.length << " m in plan,"
+    // The points as written in terrainDict, without OpenFOAM's list size
+    Info<< "Axis (";
+    forAll(axis.points, i)
+    {
+        Info<< (i ? " " : "") << "(" << axis.points[i].x() << " "
+            << axis.points[i].y() << ")";
+    }
+    Info<< "): " << axis.length << " m in plan,"
         << " profile " << surface.xEnd() << " m long, zeta from "
         << *std::min_element(zeta.begin(), zeta.end()) << " to "
         << *std::max_element(zeta.begin(), zeta.end()) << " deg" << nl
