@@ -269,52 +269,7 @@ fi
 # the mesh's: a 35 deg slope whose descent is turned by 30 deg from the
 # columns, rounded into a floor (2 m pixels, 4 m cells, 42 x 30 cells)
 plan="$work/planEnsemble"
-mkdir -p "$plan/system" "$plan/constant"
-$python - "$plan/constant/dem.asc" <<'PYEOF'
-import math, sys
-nx, ny, d, x0, y0 = 84, 60, 2.0, 100000.0, 200000.0
-t = math.tan(math.radians(35))
-c, s = math.cos(math.radians(30)), math.sin(math.radians(30))
-def z(X, Y):
-    a = (X - x0)*c + (Y - y0)*s - 10
-    if a < 90:
-        zs = -t*a
-    elif a < 130:
-        zs = -t*90 - t*(a - 90) + t*(a - 90)**2/80
-    else:
-        zs = -t*110
-    return 1000 + zs
-with open(sys.argv[1], "w") as o:
-    o.write(f"ncols {nx}\nnrows {ny}\nxllcorner {x0}\nyllcorner {y0}\n"
-            f"cellsize {d}\nNODATA_value -9999\n")
-    for j in range(ny):
-        Y = y0 + (ny - j - 0.5)*d
-        o.write(" ".join("%.17g" % z(x0 + (i + 0.5)*d, Y) for i in range(nx)) + "\n")
-PYEOF
-cat > "$plan/system/terrainDict" <<'EOF'
-FoamFile { version 2.0; format ascii; class dictionary; object terrainDict; }
-dem             "constant/dem.asc";
-cellSize        4;
-release
-{
-    r1
-    {
-        polygon     ((100020 200036) (100048 200036) (100048 200064) (100020 200064));
-        thickness   1;
-        thicknessDirection vertical;
-    }
-}
-EOF
-cat > "$plan/constant/transportProperties" <<'EOF'
-FoamFile { version 2.0; format ascii; class dictionary; object transportProperties; }
-g               9.81;
-coordinates     plan;
-earthPressure   activePassive;
-phi             35;
-rho             1500;
-frictionModel   Coulomb;
-CoulombCoeffs   { delta 24; }
-EOF
+planSlopeCase "$plan" 100000 200000 0
 ensembleDict "$plan" "20 26"
 if (cd "$plan" && terrainToCase > log.terrainToCase 2>&1 \
         && blockMesh > log.blockMesh 2>&1 \

@@ -54,58 +54,7 @@ work="$2"
 python=/usr/bin/python3
 
 base="$work/base"
-mkdir -p "$base/system" "$base/constant"
-
-$python - "$base/constant/dem.asc" <<'PYEOF'
-import math, sys
-nx, ny, d, x0, y0 = 84, 60, 2.0, 500.0, 800.0
-t = math.tan(math.radians(35))
-c, s = math.cos(math.radians(30)), math.sin(math.radians(30))
-def z(X, Y):
-    # distance along the descent (turned by 30 deg), 35 deg for 90 m,
-    # rounded into the floor over 40 m; a bump of 1.5 m, 10 m wide
-    a = (X - x0)*c + (Y - y0)*s - 10
-    if a < 90:
-        zs = -t*a
-    elif a < 130:
-        zs = -t*90 - t*(a - 90) + t*(a - 90)**2/80
-    else:
-        zs = -t*110
-    return 1000 + zs + 1.5*math.exp(-((X - 580)**2 + (Y - 850)**2)/50)
-with open(sys.argv[1], "w") as o:
-    o.write(f"ncols {nx}\nnrows {ny}\nxllcorner {x0}\nyllcorner {y0}\n"
-            f"cellsize {d}\nNODATA_value -9999\n")
-    for j in range(ny):
-        Y = y0 + (ny - j - 0.5)*d
-        o.write(" ".join("%.17g" % z(x0 + (i + 0.5)*d, Y)
-                         for i in range(nx)) + "\n")
-PYEOF
-
-cat > "$base/system/terrainDict" <<'EOF'
-FoamFile { version 2.0; format ascii; class dictionary; object terrainDict; }
-dem             "constant/dem.asc";
-cellSize        4;
-release
-{
-    r1
-    {
-        polygon     ((520 836) (548 836) (548 864) (520 864));
-        thickness   1;
-        thicknessDirection vertical;
-    }
-}
-EOF
-
-cat > "$base/constant/transportProperties" <<'EOF'
-FoamFile { version 2.0; format ascii; class dictionary; object transportProperties; }
-g               9.81;
-coordinates     plan;
-earthPressure   activePassive;
-phi             35;
-rho             1500;
-frictionModel   Coulomb;
-CoulombCoeffs   { delta 24; }
-EOF
+planSlopeCase "$base" 500 800 1.5
 
 # The defaults of terrainToCase, then ascii with 17 digits, endTime 4
 (cd "$base" && terrainToCase > log.terrainToCase 2>&1 && blockMesh > log.blockMesh 2>&1) \

@@ -29,6 +29,15 @@
 #                                  divider of a finished write
 #       waitFor <file> <regex> <seconds>   until the file has a matching
 #                                  line (status 1 when it has none by then)
+#       planSlopeCase <case> <x0> <y0> <bump>   a plan-coordinates terrain
+#                                  case before terrainToCase: the DEM
+#                                  constant/dem.asc, its corner at
+#                                  (x0, y0), a 35 deg slope turned by
+#                                  30 deg rounded into a floor (2 m pixels,
+#                                  84 x 60), with a bump of <bump> m;
+#                                  system/terrainDict (4 m cells, one
+#                                  release) and constant/transportProperties
+#                                  (activePassive, Coulomb delta 24)
 #
 #     pass, fail and skip belong in the script's own shell: called in a
 #     subshell (inside $(...), ( ... ) or a pipeline) their count would be
@@ -129,6 +138,62 @@ waitFor()
         sleep 0.1
     done
     return 1
+}
+
+planSlopeCase()
+{
+    local c="$1"
+    mkdir -p "$c/system" "$c/constant"
+    /usr/bin/python3 - "$c/constant/dem.asc" "$2" "$3" "$4" <<'PYEOF'
+import math, sys
+nx, ny, d = 84, 60, 2.0
+x0, y0, bump = float(sys.argv[2]), float(sys.argv[3]), float(sys.argv[4])
+t = math.tan(math.radians(35))
+c, s = math.cos(math.radians(30)), math.sin(math.radians(30))
+def z(X, Y):
+    # distance along the descent (turned by 30 deg), 35 deg for 90 m,
+    # rounded into the floor over 40 m; a bump 10 m wide at (80, 50)
+    a = (X - x0)*c + (Y - y0)*s - 10
+    if a < 90:
+        zs = -t*a
+    elif a < 130:
+        zs = -t*90 - t*(a - 90) + t*(a - 90)**2/80
+    else:
+        zs = -t*110
+    return 1000 + zs + bump*math.exp(-((X - x0 - 80)**2 + (Y - y0 - 50)**2)/50)
+with open(sys.argv[1], "w") as o:
+    o.write(f"ncols {nx}\nnrows {ny}\nxllcorner {x0}\nyllcorner {y0}\n"
+            f"cellsize {d}\nNODATA_value -9999\n")
+    for j in range(ny):
+        Y = y0 + (ny - j - 0.5)*d
+        o.write(" ".join("%.17g" % z(x0 + (i + 0.5)*d, Y)
+                         for i in range(nx)) + "\n")
+PYEOF
+    local xa=$(($2 + 20)) xb=$(($2 + 48)) ya=$(($3 + 36)) yb=$(($3 + 64))
+    cat > "$c/system/terrainDict" <<EOF
+FoamFile { version 2.0; format ascii; class dictionary; object terrainDict; }
+dem             "constant/dem.asc";
+cellSize        4;
+release
+{
+    r1
+    {
+        polygon     (($xa $ya) ($xb $ya) ($xb $yb) ($xa $yb));
+        thickness   1;
+        thicknessDirection vertical;
+    }
+}
+EOF
+    cat > "$c/constant/transportProperties" <<'EOF'
+FoamFile { version 2.0; format ascii; class dictionary; object transportProperties; }
+g               9.81;
+coordinates     plan;
+earthPressure   activePassive;
+phi             35;
+rho             1500;
+frictionModel   Coulomb;
+CoulombCoeffs   { delta 24; }
+EOF
 }
 
 #------------------------------------------------------------------------------
