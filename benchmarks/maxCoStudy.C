@@ -227,21 +227,12 @@ void caseB(const std::vector<double>& cos)
     const double t0 = 0.1, xMin = -12.8, xMax = 12.8;
     const int n = 512;
     const double dx = (xMax - xMin)/n;
-    const double m = dbG*std::cos(dbZeta)*(std::tan(dbDelta) - std::tan(dbZeta));
-    const double c0 = std::sqrt(dbG*dbH0*std::cos(dbZeta));
-    const auto xHead = [&](double t) { return -c0*t - 0.5*m*t*t; };
-    const auto xFront = [&](double t) { return 2*c0*t - 0.5*m*t*t; };
+    const GranularDamBreak db{dbH0, dbG, dbZeta, dbDelta};
+    const auto xHead = [&](double t) { return db.xHead(t); };
+    const auto xFront = [&](double t) { return db.xFront(t); };
     const double band = 0.05*(xFront(dbT) - xHead(dbT));
-    const auto hExact = [&](double x, double t)
-    {
-        return granularDamBreakDepth(x, t, dbH0, dbG, dbZeta, dbDelta);
-    };
-    const auto huExact = [&](double x, double t)
-    {
-        const double chi = x + 0.5*m*t*t;
-        const double uRitter = chi < -c0*t ? 0 : 2.0/3*(chi/t + c0);
-        return hExact(x, t)*(uRitter - m*t);
-    };
+    const auto hExact = [&](double x, double t) { return db.h(x, t); };
+    const auto huExact = [&](double x, double t) { return db.hu(x, t); };
     std::vector<double> hI(n), huI(n), hE(n), huE(n);
     std::vector<char> smooth(n);
     for (int i = 0; i < n; ++i)

@@ -282,23 +282,13 @@ void damBreakTables(Counter& test, double t0, double minOrder)
     in.phiDeg = 40;
     in.coulomb.deltaDeg = 24.5;
 
-    // chi = x + m t^2/2 moves with the uniform acceleration -m of the layer
-    const double m = g*std::cos(zeta)*(std::tan(delta) - std::tan(zeta));
-    const double c0 = std::sqrt(g*h0*std::cos(zeta));
-    const auto xHead = [&](double t) { return -c0*t - 0.5*m*t*t; };
-    const auto xFront = [&](double t) { return 2*c0*t - 0.5*m*t*t; };
+    // The exact solution (testing.H), its fan's edges and momentum
+    const GranularDamBreak db{h0, g, zeta, delta};
+    const auto xHead = [&](double t) { return db.xHead(t); };
+    const auto xFront = [&](double t) { return db.xFront(t); };
     const double band = 0.05*(xFront(tEnd) - xHead(tEnd));
-
-    const auto hExact = [&](double x, double t)
-    {
-        return granularDamBreakDepth(x, t, h0, g, zeta, delta);
-    };
-    const auto huExact = [&](double x, double t)
-    {
-        const double chi = x + 0.5*m*t*t;
-        const double uRitter = chi < -c0*t ? 0 : 2.0/3*(chi/t + c0);
-        return hExact(x, t)*(uRitter - m*t);
-    };
+    const auto hExact = [&](double x, double t) { return db.h(x, t); };
+    const auto huExact = [&](double x, double t) { return db.hu(x, t); };
 
     std::printf("\n2%s. Dam break on the incline (section 5.1) %s: h0 = %g m, "
                 "zeta = %g deg, delta = %g deg, K = 1, t = %g s\n",
