@@ -101,6 +101,28 @@ off_t syncPath(const fileName& path)
     return S_ISREG(st.st_mode) ? st.st_size : 0;
 }
 
+//- Start the writeback of every file of a tree, not waiting for it:
+//  fsync, one file after the other, then waits for data already on its
+//  way to the disk (best effort: errors are fsync's to report)
+void startWriteback(const fileName& dir)
+{
+#ifdef SYNC_FILE_RANGE_WRITE
+    for (const fileName& f : readDir(dir, fileName::FILE, false, false))
+    {
+        const int fd = ::open((dir/f).c_str(), O_RDONLY);
+        if (fd >= 0)
+        {
+            ::sync_file_range(fd, 0, 0, SYNC_FILE_RANGE_WRITE);
+            ::close(fd);
+        }
+    }
+    for (const fileName& d : readDir(dir, fileName::DIRECTORY, false, false))
+    {
+        startWriteback(dir/d);
+    }
+#endif
+}
+
 //- Flush a directory tree to disk; the bytes of its files
 double syncTree(const fileName& dir)
 {
@@ -499,7 +521,11 @@ void atomicWriter::writeStaged(const fileName& staged)
     {
         failing("write", staged, why);
     }
+    const std::chrono::steady_clock::time_point synced =
+        std::chrono::steady_clock::now();
+    startWriteback(staged);
     bytes_ += syncTree(staged);
+    syncSeconds_ += since(synced);
 }
 
 namespace

@@ -728,6 +728,8 @@ void avalancheRun<Real>::run()
     const double waited =
         returnReduce(writer_.waitSeconds(), maxOp<double>());
     const double called = returnReduce(writeCallSeconds_, maxOp<double>());
+    const double synced =
+        returnReduce(writer_.syncSeconds(), maxOp<double>());
     const double bytes = returnReduce(writer_.bytes(), sumOp<double>());
     char mb[32];
     snprintf(mb, sizeof(mb), "%.1f", bytes/1e6);
@@ -737,7 +739,8 @@ void avalancheRun<Real>::run()
           ? "on the writer thread (" + wallSeconds(waited)
           + " s waited for by the solver)"
           : std::string("on the solver's thread")).c_str()
-        << ", " << mb << " MB; " << wallSeconds(called).c_str()
+        << ", " << mb << " MB (" << wallSeconds(synced).c_str()
+        << " s of it fsync); " << wallSeconds(called).c_str()
         << " s in write on the solver's thread" << nl << endl;
 }
 
