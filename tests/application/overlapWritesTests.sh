@@ -6,8 +6,10 @@
 #     Writes overlapped with the steps (issue 27 item 1): a writer thread
 #     writes, flushes and renames each time directory while the solver
 #     steps on.  On the dam break (256 x 32 cells, binary, writes every
-#     0.05 s to 0.5 s), each write held 0.1 s in flight
-#     (SH_TEST_WRITE_DELAY, a test hook):
+#     0.05 s to 0.5 s), each write held 0.03 s in flight
+#     (SH_TEST_WRITE_DELAY, a test hook; the steps between two writes take
+#     longer, 0.07 s on the development machine, so that a write waited
+#     for shows as a wait):
 #     same: every file of every time directory equals, byte for byte, a
 #       run whose writes are on the solver's thread (SH_OVERLAP_WRITES=0);
 #     overlapped: the summary line says the writes ran on the writer
@@ -67,7 +69,7 @@ over="$work/overlap"
 sync="$work/sync"
 cp -r "$base" "$over"
 cp -r "$base" "$sync"
-(cd "$over" && SH_TEST_WRITE_DELAY=0.1 savageHutterFoam -backend cpu > log 2>&1)
+(cd "$over" && SH_TEST_WRITE_DELAY=0.03 savageHutterFoam -backend cpu > log 2>&1)
 rcOver=$?
 (cd "$sync" && SH_OVERLAP_WRITES=0 savageHutterFoam -backend cpu > log 2>&1)
 rcSync=$?
@@ -83,7 +85,7 @@ fi
 writing=$(secondsOf "$over/log" 1)
 waited=$(secondsOf "$over/log" 2)
 if grep -q '^Writes: 10 in .* on the writer thread (.* waited for by the solver)' "$over/log" \
-&& python3 -c "import sys; w, q = float('$writing'), float('$waited'); sys.exit(not (w >= 1.0 and q < 0.5*w))" 2>/dev/null \
+&& python3 -c "import sys; w, q = float('$writing'), float('$waited'); sys.exit(not (w >= 0.3 and q < 0.5*w))" 2>/dev/null \
 && grep -q "^Writes: 10 in .* on the solver's thread" "$sync/log" \
 && grep -q "Writes on the solver's thread, not overlapped with the steps: SH_OVERLAP_WRITES=0" "$sync/log"
 then
