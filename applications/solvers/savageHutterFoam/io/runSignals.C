@@ -4,6 +4,8 @@
 
 #include "runSignals.H"
 
+#include <sys/types.h>
+#include <unistd.h>
 #include <cstring>
 #include <initializer_list>
 
@@ -26,7 +28,9 @@ volatile std::sig_atomic_t held = 0;
 void endBy(const int sig)
 {
     std::signal(sig, SIG_DFL);
-    std::raise(sig);
+    // To the process, not the thread (raise): a holdEnd on the writer
+    // thread, which blocks these signals, ends there
+    ::kill(::getpid(), sig);
 }
 
 extern "C" void onSignal(int sig)

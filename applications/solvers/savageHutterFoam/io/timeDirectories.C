@@ -5,8 +5,13 @@
 #include "timeDirectories.H"
 #include "OSspecific.H"
 #include "runSignals.H"
+#include "OStringStream.H"
+#include "fileOperation.H"
 
 #include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <pthread.h>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -31,6 +36,43 @@ struct timeAccess : public Time
     }
 };
 
+//- What failed in writing a time directory ("Cannot <what> <path>: why"),
+//  thrown on whichever thread writes and reported on the solver's
+struct writeFailure
+{
+    std::string message;
+};
+
+std::string whatFailed
+(
+    const char* what,
+    const fileName& path,
+    const std::string& why
+)
+{
+    return std::string("Cannot ") + what + " " + path + ": " + why;
+}
+
+[[noreturn]] void failing
+(
+    const char* what,
+    const fileName& path,
+    const std::string& why = std::strerror(errno)
+)
+{
+    throw writeFailure{whatFailed(what, path, why)};
+}
+
+[[noreturn]] void report(const std::string& message)
+{
+    FatalErrorInFunction
+        << message.c_str() << nl
+        << "The time directories written before are intact; the next start"
+        << " removes " << stagingDirName << "." << nl
+        << exit(FatalError);
+    std::abort();
+}
+
 [[noreturn]] void failed
 (
     const char* what,
@@ -38,43 +80,70 @@ struct timeAccess : public Time
     const std::string& why = std::strerror(errno)
 )
 {
-    FatalErrorInFunction
-        << "Cannot " << what << " " << path << ": " << why.c_str() << nl
-        << "The time directories written before are intact; the next start"
-        << " removes " << stagingDirName << "." << nl
-        << exit(FatalError);
-    std::abort();
+    report(whatFailed(what, path, why));
 }
 
-//- Flush a file or directory to disk
-void syncPath(const fileName& path)
+//- Flush a file or directory to disk; its size
+off_t syncPath(const fileName& path)
 {
     const int fd = ::open(path.c_str(), O_RDONLY);
-    if (fd < 0 || ::fsync(fd) != 0)
+    struct stat st;
+    if (fd < 0 || ::fsync(fd) != 0 || ::fstat(fd, &st) != 0)
     {
-        failed("flush to disk", path);
+        const std::string why = std::strerror(errno);
+        if (fd >= 0)
+        {
+            ::close(fd);
+        }
+        failing("flush to disk", path, why);
     }
     ::close(fd);
+    return S_ISREG(st.st_mode) ? st.st_size : 0;
 }
 
-void syncTree(const fileName& dir)
+//- Start the writeback of every file of a tree, not waiting for it:
+//  fsync, one file after the other, then waits for data already on its
+//  way to the disk (best effort: errors are fsync's to report)
+void startWriteback(const fileName& dir)
 {
+#ifdef SYNC_FILE_RANGE_WRITE
     for (const fileName& f : readDir(dir, fileName::FILE, false, false))
     {
-        syncPath(dir/f);
+        const int fd = ::open((dir/f).c_str(), O_RDONLY);
+        if (fd >= 0)
+        {
+            ::sync_file_range(fd, 0, 0, SYNC_FILE_RANGE_WRITE);
+            ::close(fd);
+        }
     }
     for (const fileName& d : readDir(dir, fileName::DIRECTORY, false, false))
     {
-        syncTree(dir/d);
+        startWriteback(dir/d);
+    }
+#endif
+}
+
+//- Flush a directory tree to disk; the bytes of its files
+double syncTree(const fileName& dir)
+{
+    double bytes = 0;
+    for (const fileName& f : readDir(dir, fileName::FILE, false, false))
+    {
+        bytes += syncPath(dir/f);
+    }
+    for (const fileName& d : readDir(dir, fileName::DIRECTORY, false, false))
+    {
+        bytes += syncTree(dir/d);
     }
     syncPath(dir);
+    return bytes;
 }
 
 void renameOrFail(const fileName& from, const fileName& to)
 {
     if (::rename(from.c_str(), to.c_str()) != 0)
     {
-        failed("rename into place", from);
+        failing("rename into place", from);
     }
 }
 
@@ -95,7 +164,7 @@ bool exchange(const fileName& a, const fileName& b)
     }
     if (errno != EINVAL && errno != ENOSYS && errno != ENOTSUP)
     {
-        failed("swap into place", a);
+        failing("swap into place", a);
     }
 #endif
     return false;
@@ -138,7 +207,14 @@ void restoreReplaced(const fileName& caseDir)
                     << "Restoring " << target << " from " << staging/d
                     << ": a run was stopped while replacing it" << nl
                     << endl;
-                renameOrFail(staging/d, target);
+                try
+                {
+                    renameOrFail(staging/d, target);
+                }
+                catch (const writeFailure& f)
+                {
+                    report(f.message);
+                }
             }
         }
     }
@@ -339,10 +415,47 @@ void reportUnreadableFile
 }
 
 
+namespace
+{
+
+//- Why writes may not overlap the steps (empty: they may)
+std::string overlapRefused()
+{
+    // The tests compare with writes on the solver's thread
+    const char* env = std::getenv("SH_OVERLAP_WRITES");
+    if (env && std::string(env) == "0")
+    {
+        return "SH_OVERLAP_WRITES=0";
+    }
+    // The uncollated handler writes each processor's files itself with
+    // no communication (fileOperation::writeObject, OFstream); the
+    // collated and masterUncollated handlers send the data to the master,
+    // which only the solver's thread may do (MPI)
+    if (fileHandler().type() != "uncollated")
+    {
+        return "fileHandler " + fileHandler().type() + " communicates"
+            " between processors; only uncollated writes overlap the steps";
+    }
+    return std::string();
+}
+
+double since(const std::chrono::steady_clock::time_point& t)
+{
+    return std::chrono::duration<double>
+    (
+        std::chrono::steady_clock::now() - t
+    ).count();
+}
+
+} // namespace
+
+
 atomicWriter::atomicWriter(Time& runTime)
 :
     runTime_(runTime),
-    purgeWrite_(timeAccess::purgeWrite(runTime))
+    purgeWrite_(timeAccess::purgeWrite(runTime)),
+    notOverlapped_(overlapRefused()),
+    overlap_(notOverlapped_.empty())
 {
     timeAccess::purgeWrite(runTime) = 0;
 }
@@ -357,8 +470,19 @@ atomicWriter::atomicWriter
 :
     runTime_(runTime),
     purgeWrite_(purgeWrite),
-    within_(within)
+    within_(within),
+    notOverlapped_("an ensemble member's or statistics' writer"),
+    overlap_(false)
 {}
+
+
+atomicWriter::~atomicWriter()
+{
+    if (thread_.joinable())
+    {
+        thread_.join();
+    }
+}
 
 
 void atomicWriter::writeStaged(const fileName& staged)
@@ -369,13 +493,12 @@ void atomicWriter::writeStaged(const fileName& staged)
     caseName =
         within_.empty() ? realCase/stagingDirName
       : realCase/within_/stagingDirName;
-    // A stream that fails (disk full) is a FatalIOError inside Time:
-    // reported here with what it means for the case
+    // A stream that fails (disk full) is a FatalIOError inside Time
+    // (thrown: write() and wait() set throwExceptions), reported with
+    // what it means for the case
     const std::string why =
         "a file of it could not be written (disk full, quota, file size"
         " limit or permissions?)";
-    const bool ioThrows = FatalIOError.throwExceptions();
-    const bool throws = FatalError.throwExceptions();
     bool ok = false;
     try
     {
@@ -383,22 +506,27 @@ void atomicWriter::writeStaged(const fileName& staged)
     }
     catch (const IOerror& e)
     {
-        Perr<< nl << e << nl;
+        OStringStream os;
+        os << e;
+        foamError_ = os.str();
     }
     catch (const error& e)
     {
-        Perr<< nl << e << nl;
+        OStringStream os;
+        os << e;
+        foamError_ = os.str();
     }
-    FatalIOError.throwExceptions(ioThrows);
-    FatalError.throwExceptions(throws);
     caseName = realCase;
     if (!ok || !isDir(staged, false))
     {
-        failed("write", staged, why);
+        failing("write", staged, why);
     }
-    syncTree(staged);
+    const std::chrono::steady_clock::time_point synced =
+        std::chrono::steady_clock::now();
+    startWriteback(staged);
+    bytes_ += syncTree(staged);
+    syncSeconds_ += since(synced);
 }
-
 
 namespace
 {
@@ -450,12 +578,11 @@ void moveIntoPlace
 } // namespace
 
 
-void atomicWriter::write(const bool restart)
+void atomicWriter::writeTime(const word& name, const bool restart)
 {
     const fileName caseDir =
         within_.empty() ? runTime_.path() : runTime_.path()/within_;
     const fileName staging = caseDir/stagingDirName;
-    const word name = runTime_.timeName();
     const fileName staged = staging/name;
     if (isDir(staged, false))
     {
@@ -492,6 +619,116 @@ void atomicWriter::write(const bool restart)
         {
             rmDir(caseDir/old);
         }
+    }
+}
+
+
+void atomicWriter::writeCatching(const word& name, const bool restart)
+{
+    const std::chrono::steady_clock::time_point start =
+        std::chrono::steady_clock::now();
+    // The tests hold a write in flight this long (seconds), to signal or
+    // step during it
+    static const double delay =
+        std::getenv("SH_TEST_WRITE_DELAY")
+      ? std::atof(std::getenv("SH_TEST_WRITE_DELAY")) : 0;
+    if (delay > 0)
+    {
+        std::this_thread::sleep_for(std::chrono::duration<double>(delay));
+    }
+    try
+    {
+        writeTime(name, restart);
+    }
+    catch (const writeFailure& f)
+    {
+        failure_ = f.message;
+    }
+    catch (const IOerror& e)
+    {
+        // From OpenFOAM outside Time's writer (mkDir, readDir)
+        OStringStream os;
+        os << e;
+        foamError_ = os.str();
+        failure_ = whatFailed("write", runTime_.timeName(), "see above");
+    }
+    catch (const error& e)
+    {
+        OStringStream os;
+        os << e;
+        foamError_ = os.str();
+        failure_ = whatFailed("write", runTime_.timeName(), "see above");
+    }
+    catch (const std::exception& e)
+    {
+        failure_ = whatFailed("write", runTime_.timeName(), e.what());
+    }
+    writeSeconds_ += since(start);
+    ++nWrites_;
+}
+
+
+void atomicWriter::reportFailure() const
+{
+    if (!foamError_.empty())
+    {
+        Perr<< nl << foamError_.c_str() << nl;
+    }
+    report(failure_);
+}
+
+
+void atomicWriter::write(const bool restart)
+{
+    wait();
+    const word name = runTime_.timeName();
+    // Errors inside Time's writer and OpenFOAM's file functions throw, to
+    // be caught and reported here or by wait()
+    ioThrew_ = FatalIOError.throwExceptions();
+    threw_ = FatalError.throwExceptions();
+    if (!overlap_)
+    {
+        writeCatching(name, restart);
+        FatalIOError.throwExceptions(ioThrew_);
+        FatalError.throwExceptions(threw_);
+        if (!failure_.empty())
+        {
+            reportFailure();
+        }
+        return;
+    }
+    // SIGTERM, SIGINT, SIGUSR1 stay with the solver's thread: the writer
+    // thread starts with them blocked (a thread inherits its creator's
+    // mask)
+    sigset_t mask, old;
+    sigemptyset(&mask);
+    sigaddset(&mask, SIGTERM);
+    sigaddset(&mask, SIGINT);
+    sigaddset(&mask, SIGUSR1);
+    pthread_sigmask(SIG_BLOCK, &mask, &old);
+    thread_ = std::thread
+    (
+        [this, name, restart]() { writeCatching(name, restart); }
+    );
+    pthread_sigmask(SIG_SETMASK, &old, nullptr);
+}
+
+
+void atomicWriter::wait()
+{
+    if (!thread_.joinable())
+    {
+        return;
+    }
+    const std::chrono::steady_clock::time_point start =
+        std::chrono::steady_clock::now();
+    thread_.join();
+    waitSeconds_ += since(start);
+    FatalIOError.throwExceptions(ioThrew_);
+    FatalError.throwExceptions(threw_);
+    if (!failure_.empty())
+    {
+        reportFailure();
     }
 }
 

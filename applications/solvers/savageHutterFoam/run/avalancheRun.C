@@ -80,6 +80,11 @@ avalancheRun<Real>::avalancheRun
 
     Info<< "Backend: " << solver_->name().c_str() << ", "
         << (sizeof(Real) == 8 ? "double" : "single") << " precision" << nl;
+    if (!writer_.overlapped())
+    {
+        Info<< "Writes on the solver's thread, not overlapped with the"
+            << " steps: " << writer_.whyNotOverlapped().c_str() << nl;
+    }
 
     const sh::Diagnostics d0 = solver_->diagnostics();
     Info<< "Initial volume " << d0.volume << " m^3, " << d0.wetCells
@@ -357,6 +362,9 @@ void avalancheRun<Real>::write(const bool restart)
     {
         return;
     }
+    const wallClock::time_point callStart = wallClock::now();
+    // The fields and Time are the writer thread's until it has finished
+    finishWrite();
     const double dtWrite = solver_->time() - lastWritten_;
     solver_->getState(hs_, hus_, hvs_);
     // Not written on any processor unless good on all (store agrees)
@@ -392,9 +400,15 @@ void avalancheRun<Real>::write(const bool restart)
             << " fields" << nl;
         lastRestart_ = solver_->time();
         lastFull_ = true;
+        writeCallSeconds_ += secondsSince(callStart);
         return;
     }
-    functions_.execute();
+    // After the write (now, or once the writer thread has finished)
+    executePending_ = true;
+    if (!writer_.overlapped())
+    {
+        finishWrite();
+    }
     if (ac_.input.plan())
     {
         recordCentreOfMass();
@@ -406,6 +420,19 @@ void avalancheRun<Real>::write(const bool restart)
     if (full)
     {
         lastRestart_ = solver_->time();
+    }
+    writeCallSeconds_ += secondsSince(callStart);
+}
+
+
+template<class Real>
+void avalancheRun<Real>::finishWrite()
+{
+    writer_.wait();
+    if (executePending_)
+    {
+        executePending_ = false;
+        functions_.execute();
     }
 }
 
@@ -520,6 +547,8 @@ template<class Real>
 bool avalancheRun<Real>::actOnSignals()
 {
     runSignals::pending = 0;
+    // A signal's write follows a write in flight, complete
+    finishWrite();
     const bool stop = anyProcessor(runSignals::stop);
     Info<< nl << runSignals::name(runSignals::last) << " at t = "
         << solver_->time() << ": writing"
@@ -564,6 +593,8 @@ void avalancheRun<Real>::logProgress(const bool final)
         << endl;
     if (!std::isfinite(d.volume))
     {
+        // The last good state's directory complete before the exit
+        finishWrite();
         FatalErrorInFunction
             << "The solution is no longer finite at t = " << t
             << "; nothing more is written" << nl << exit(FatalError);
@@ -643,6 +674,8 @@ void avalancheRun<Real>::run()
         }
     }
 
+    // The last write complete before the run reports its end
+    finishWrite();
     functions_.end();
     if (stopped_)
     {
@@ -687,7 +720,28 @@ void avalancheRun<Real>::run()
         << " s wall stepping, without writing)" << nl
         << "Thin cells whose speed was bounded (speedBounds, scheme.H): "
         << std::to_string(solver_->diagnostics().speedClips).c_str()
-        << nl << endl;
+        << nl;
+    // The writes: decomposed, the slowest processor's times and all
+    // processors' bytes
+    const double writing =
+        returnReduce(writer_.writeSeconds(), maxOp<double>());
+    const double waited =
+        returnReduce(writer_.waitSeconds(), maxOp<double>());
+    const double called = returnReduce(writeCallSeconds_, maxOp<double>());
+    const double synced =
+        returnReduce(writer_.syncSeconds(), maxOp<double>());
+    const double bytes = returnReduce(writer_.bytes(), sumOp<double>());
+    char mb[32];
+    snprintf(mb, sizeof(mb), "%.1f", bytes/1e6);
+    Info<< "Writes: " << writer_.nWrites() << " in "
+        << wallSeconds(writing).c_str() << " s "
+        << (writer_.overlapped()
+          ? "on the writer thread (" + wallSeconds(waited)
+          + " s waited for by the solver)"
+          : std::string("on the solver's thread")).c_str()
+        << ", " << mb << " MB (" << wallSeconds(synced).c_str()
+        << " s of it fsync); " << wallSeconds(called).c_str()
+        << " s in write on the solver's thread" << nl << endl;
 }
 
 // * * * * * * * * * * * * * * Instantiations  * * * * * * * * * * * * * * //

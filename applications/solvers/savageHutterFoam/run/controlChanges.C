@@ -175,6 +175,9 @@ bool avalancheRun<Real>::readControlIfModified()
         return false;
     }
     controlStamp_ = stamp;
+    // Writing format and precision may change: not under a write in
+    // flight
+    finishWrite();
     controlSettings c;
     bool valid = readChangedControl(c);
     // Decomposed: every processor read the same file (one edited between
