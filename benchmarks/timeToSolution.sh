@@ -76,7 +76,7 @@ figures()
     steps=$(sed -n 's/^Time loop: \([0-9]*\) steps.*/\1/p' "$log")
     loop=$(sed -n 's/^Time loop: .* in \([0-9.e+-]*\) s wall.*/\1/p' "$log")
     stepping=$(sed -n 's/^Stepping: .*(\([0-9.e+-]*\) s wall stepping.*/\1/p' "$log")
-    writes=$(sed -n 's/^Writes: .* in \([0-9.e+-]*\) s .*/\1/p' "$log" | head -n 1)
+    writes=$(sed -n 's/^Writes: [0-9]* in \([0-9][0-9.e+-]*\) s .*/\1/p' "$log" | head -n 1)
     echo "${steps:-?} ${stepping:-?} ${loop:-?} ${writes:--}"
 }
 
