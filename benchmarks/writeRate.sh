@@ -4,7 +4,7 @@
 #
 # Description
 #     The write path's speed (issue 27 item 1): the dam break of
-#     gpuDamBreakRate.sh (1 m cells, walls, fully wet, binary) on NX x NY
+#     benchmarks/damBreakCase.sh (1 m cells, walls, fully wet, binary) on NX x NY
 #     cells, written every writeInterval s to endTime so that several
 #     writes happen (h, U, hU, zb, regime, hMax, UMax, tArrival), run with
 #     the writes overlapped with the steps and again with them on the
@@ -39,43 +39,14 @@ nx="${size%x*}"
 ny="${size#*x}"
 . "$project/bin/tools/RunFunctions"
 
+. "$project/benchmarks/damBreakCase.sh"
+
 d="$work/dam$size/base"
 rm -rf "$work/dam$size"
-mkdir -p "$d"
-cp -r "$project/tutorials/damBreak"/{0.orig,constant,system} "$d"/
-(
-    cd "$d" || exit 1
-    rm -rf constant/polyMesh
-    cat > system/blockMeshDict <<EOD
-FoamFile { version 2.0; format ascii; class dictionary; object blockMeshDict; }
-vertices
-(
-    (0 0 0) ($nx 0 0) ($nx $ny 0) (0 $ny 0)
-    (0 0 1) ($nx 0 1) ($nx $ny 1) (0 $ny 1)
-);
-blocks ( hex (0 1 2 3 4 5 6 7) ($nx $ny 1) simpleGrading (1 1 1) );
-boundary
-(
-    upslope   { type wall; faces ((0 4 7 3)); }
-    downslope { type wall; faces ((1 2 6 5)); }
-    sides     { type wall; faces ((0 1 5 4) (3 7 6 2)); }
-    frontAndBack { type empty; faces ((0 3 2 1) (4 5 6 7)); }
-);
-EOD
-    cat > system/setAvalancheFieldsDict <<EOD
-FoamFile { version 2.0; format ascii; class dictionary; object setAvalancheFieldsDict; }
-h ( damBreak { position $((nx/2)); upstream 1.0; downstream 0.5; } );
-EOD
-    sed -i -e '/upslope\|downslope\|sides/s/zeroGradient; }/slip; }/' 0.orig/U
-    setEntry constant/transportProperties inclination "constant 0"
-    setEntry constant/transportProperties CoulombCoeffs/delta 0
-    setEntry system/controlDict endTime "$endTime"
-    setEntry system/controlDict writeInterval "$writeInterval"
-    setEntry system/controlDict writeFormat binary
-    blockMesh > log.blockMesh 2>&1 || exit 1
-    restore0Dir > /dev/null
-    setAvalancheFields > log.setAvalancheFields 2>&1 || exit 1
-) || { echo "FAIL  case set-up (see $d)"; exit 1; }
+damBreakCase "$d" "$nx" "$ny" > /dev/null 2>&1 \
+    && setEntry "$d/system/controlDict" endTime "$endTime" \
+    && setEntry "$d/system/controlDict" writeInterval "$writeInterval" \
+    || { echo "FAIL  case set-up (see $d)"; exit 1; }
 
 #- num <log> <regex>: the first number after the regex on its line
 num()
