@@ -307,7 +307,13 @@ void lakesAtOpenSides(Counter& t)
         {"wet: tilted plane + bump, eta 0.4", 0.4, [](double x, double y)
             { return 0.05*(x + y) + 0.2*std::exp(-(x*x + y*y)/0.1); }},
         {"shoreline across the open sides", 0.3, [](double x, double)
-            { return 0.3 + 0.3*x; }}
+            { return 0.3 + 0.3*x; }},
+        // the plane turned 135 deg (descending towards (-1, 1)): its
+        // shoreline x - y = -0.24 runs diagonally and meets the open sides
+        // x = -1 and y = 1 where the edge cell is wet and its inner
+        // neighbour dry (grid.H openGhostThickness)
+        {"diagonal shoreline, plane 135 deg", 0.25, [](double x, double y)
+            { return 0.3 + 0.3*std::sqrt(0.5)*(x - y); }}
     };
     for (const Lake& lake : lakes)
     {
@@ -344,8 +350,16 @@ void lakesWithK(Counter& t)
         "sides", "bed", "Kx", "Ky", "wet cells", "max|v| m/s", "max|dh| m");
     for (const bool open : {false, true})
     {
-        for (const bool shoreline : {false, true})
+        // beds: 0 tilted plane + bump, 1 the bowl, 2 (open sides only) the
+        // plane turned 135 deg whose shoreline meets the open sides where
+        // the edge cell is wet and its inner neighbour dry
+        for (const int bedKind : {0, 1, 2})
         {
+            if (bedKind == 2 && !open)
+            {
+                continue;
+            }
+            const bool shoreline = bedKind > 0;
             ModelInput in;
             in.g = 9.81;
             in.earthPressure = EarthPressureModel::activePassive;
@@ -364,26 +378,29 @@ void lakesWithK(Counter& t)
                     pb.bc.type[s] = BCType::wall;
                 }
             }
-            const auto bed = [shoreline](double x, double y)
+            const auto bed = [bedKind](double x, double y)
             {
                 const double r = std::hypot(x, y);
-                return shoreline ? 0.5*r : 0.05*(x + y) + 0.2*std::exp(-r*r/0.1);
+                return bedKind == 2 ? 0.3 + 0.3*std::sqrt(0.5)*(x - y)
+                     : bedKind == 1 ? 0.5*r
+                     : 0.05*(x + y) + 0.2*std::exp(-r*r/0.1);
             };
-            const double eta = shoreline ? 0.15 : 0.2;
+            const double eta = bedKind == 2 ? 0.25 : shoreline ? 0.15 : 0.2;
             setSymmetric(pb, 1, bed, [&](double x, double y)
             {
                 return std::max(0.0, (eta - bed(x, y))/K.kx);
             });
             const RestCheck r = runRest(pb, 1.0);
             std::printf("%-8s %-12s %10.6f %10.6f %12ld %12.3g %12.3g\n",
-                open ? "open" : "walls", shoreline ? "bowl" : "plane+bump", K.kx, K.ky,
+                open ? "open" : "walls",
+                bedKind == 2 ? "plane 135" : shoreline ? "bowl" : "plane+bump", K.kx, K.ky,
                 r.wet, r.vmax, r.dh);
             t.check(std::fabs(K.kx - K.ky) <= 1e-15 && K.kx < 0.5,
                 "at rest without static resistance K is the active value, "
                 "Kx = Ky = (1 - sin phi)/(1 + sin phi) for delta = 0 (to 1e-15)");
             t.check(r.vmax <= 1e-12 && r.dh <= 1e-12,
                 fmt("K = %.4f, ", K.kx) + (open ? "open sides, " : "walls, ")
-              + (shoreline ? "shoreline" : "wet")
+              + (bedKind == 2 ? "diagonal shoreline" : shoreline ? "shoreline" : "wet")
               + ": K h + zb = const kept at rest to round-off (|v|, |dh| <= 1e-12)");
         }
     }
