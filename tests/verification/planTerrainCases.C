@@ -36,11 +36,11 @@
              plane of another orientation, at rest to round-off (the
              initial state's eps K H/J^2 + b = eta itself holds to
              round-off only on a sloping plane; bit for bit needs the
-             flat floor of planScheme b); printed only: a lake whose
-             shoreline meets an open side where the edge cell's inner
-             neighbour is dry (the side's linear h is not the lake's:
-             it moves, in slope coordinates alike) and the lake in the
-             bowl (balanced to O(dx^2) only, section 5)
+             flat floor of planScheme b), and a lake whose shoreline
+             meets an open side where the edge cell's inner neighbour
+             is dry (the ghosts continue the lake's surface there,
+             physics/grid.H openGhostThickness); printed only: the lake
+             in the bowl (balanced to O(dx^2) only, section 5)
          (2) a layer held by friction (delta 30 deg above the steepest
              slope, 27.2 deg) over the whole DEM, inputs perturbed by
              round-off, both K: momentum exactly 0 and H unchanged bit
