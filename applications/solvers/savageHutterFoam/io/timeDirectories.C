@@ -7,6 +7,7 @@
 #include "runSignals.H"
 #include "OStringStream.H"
 #include "fileOperation.H"
+#include "wallClock.H"
 
 #include <cerrno>
 #include <chrono>
@@ -439,12 +440,14 @@ std::string overlapRefused()
     return std::string();
 }
 
-double since(const std::chrono::steady_clock::time_point& t)
+//- An OpenFOAM error as OpenFOAM prints it (IOerror with its file and
+//  line: its own operator<<, which error's does not call)
+template<class Error>
+std::string foamMessage(const Error& e)
 {
-    return std::chrono::duration<double>
-    (
-        std::chrono::steady_clock::now() - t
-    ).count();
+    OStringStream os;
+    os << e;
+    return os.str();
 }
 
 } // namespace
@@ -506,26 +509,21 @@ void atomicWriter::writeStaged(const fileName& staged)
     }
     catch (const IOerror& e)
     {
-        OStringStream os;
-        os << e;
-        foamError_ = os.str();
+        foamError_ = foamMessage(e);
     }
     catch (const error& e)
     {
-        OStringStream os;
-        os << e;
-        foamError_ = os.str();
+        foamError_ = foamMessage(e);
     }
     caseName = realCase;
     if (!ok || !isDir(staged, false))
     {
         failing("write", staged, why);
     }
-    const std::chrono::steady_clock::time_point synced =
-        std::chrono::steady_clock::now();
+    const wallClock::time_point synced = wallClock::now();
     startWriteback(staged);
     bytes_ += syncTree(staged);
-    syncSeconds_ += since(synced);
+    syncSeconds_ += secondsSince(synced);
 }
 
 namespace
@@ -625,8 +623,7 @@ void atomicWriter::writeTime(const word& name, const bool restart)
 
 void atomicWriter::writeCatching(const word& name, const bool restart)
 {
-    const std::chrono::steady_clock::time_point start =
-        std::chrono::steady_clock::now();
+    const wallClock::time_point start = wallClock::now();
     // The tests hold a write in flight this long (seconds), to signal or
     // step during it
     static const double delay =
@@ -647,23 +644,19 @@ void atomicWriter::writeCatching(const word& name, const bool restart)
     catch (const IOerror& e)
     {
         // From OpenFOAM outside Time's writer (mkDir, readDir)
-        OStringStream os;
-        os << e;
-        foamError_ = os.str();
-        failure_ = whatFailed("write", runTime_.timeName(), "see above");
+        foamError_ = foamMessage(e);
+        failure_ = whatFailed("write", name, "see above");
     }
     catch (const error& e)
     {
-        OStringStream os;
-        os << e;
-        foamError_ = os.str();
-        failure_ = whatFailed("write", runTime_.timeName(), "see above");
+        foamError_ = foamMessage(e);
+        failure_ = whatFailed("write", name, "see above");
     }
     catch (const std::exception& e)
     {
-        failure_ = whatFailed("write", runTime_.timeName(), e.what());
+        failure_ = whatFailed("write", name, e.what());
     }
-    writeSeconds_ += since(start);
+    writeSeconds_ += secondsSince(start);
     ++nWrites_;
 }
 
@@ -720,10 +713,9 @@ void atomicWriter::wait()
     {
         return;
     }
-    const std::chrono::steady_clock::time_point start =
-        std::chrono::steady_clock::now();
+    const wallClock::time_point start = wallClock::now();
     thread_.join();
-    waitSeconds_ += since(start);
+    waitSeconds_ += secondsSince(start);
     FatalIOError.throwExceptions(ioThrew_);
     FatalError.throwExceptions(threw_);
     if (!failure_.empty())
