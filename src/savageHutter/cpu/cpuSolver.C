@@ -351,10 +351,19 @@ void CpuSolver<Real>::getState
 template<class Real>
 PeakMaps<Real> CpuSolver<Real>::peakMaps()
 {
-    return HostPeaks<Real>::maps
+    PeakMaps<Real> maps;
+    getPeakMaps(maps);
+    return maps;
+}
+
+
+template<class Real>
+void CpuSolver<Real>::getPeakMaps(PeakMaps<Real>& maps)
+{
+    HostPeaks<Real>::maps
     (
         model_.g, model_.p, peaks_.h.data(), peaks_.speed2.data(),
-        peaks_.arrival.data()
+        peaks_.arrival.data(), maps
     );
 }
 

@@ -805,22 +805,37 @@ PeakMaps<Real> HostPeaks<Real>::maps
 )
 {
     PeakMaps<Real> r;
+    maps(g, p, hPad, speed2Pad, arrivalPad, r);
+    return r;
+}
+
+
+template<class Real>
+void HostPeaks<Real>::maps
+(
+    const Grid<Real>& g,
+    const Params<Real>& p,
+    const Real* hPad,
+    const Real* speed2Pad,
+    const float* arrivalPad,
+    PeakMaps<Real>& r
+)
+{
     toInterior(g, hPad, r.h);
     toInterior(g, speed2Pad, r.speed);
     toInterior(g, arrivalPad, r.arrival);
-    if (p.rho > Real(0))
+    const long n = long(r.speed.size());
+    const bool pressure = p.rho > Real(0);
+    r.pressure.resize(pressure ? r.speed.size() : 0);
+    #pragma omp parallel for schedule(static)
+    for (long k = 0; k < n; ++k)
     {
-        r.pressure.resize(r.speed.size());
-        for (std::size_t k = 0; k < r.speed.size(); ++k)
+        if (pressure)
         {
             r.pressure[k] = p.rho*r.speed[k];
         }
+        r.speed[k] = std::sqrt(r.speed[k]);
     }
-    for (Real& s : r.speed)
-    {
-        s = std::sqrt(s);
-    }
-    return r;
 }
 
 
