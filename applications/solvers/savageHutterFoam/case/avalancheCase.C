@@ -339,7 +339,31 @@ void avalancheCase::reportPressureRestart(const sh::Problem<Real>& pb) const
 
 
 template<class Real>
-bool avalancheCase::store
+bool avalancheCase::goodState
+(
+    const std::vector<Real>& hs,
+    const std::vector<Real>& hus,
+    const std::vector<Real>& hvs
+) const
+{
+    // Good on every processor, or on none: the fields' boundary
+    // conditions exchange across processor patches
+    const long n = long(hs.size());
+    long bad = 0;
+    #pragma omp parallel for reduction(+:bad) schedule(static)
+    for (long k = 0; k < n; ++k)
+    {
+        bad +=
+            !std::isfinite(double(hs[k])) || hs[k] < 0
+         || !std::isfinite(double(hus[k]))
+         || !std::isfinite(double(hvs[k]));
+    }
+    return !anyProcessor(bad != 0);
+}
+
+
+template<class Real>
+void avalancheCase::fill
 (
     const std::vector<Real>& hs,
     const std::vector<Real>& hus,
@@ -347,55 +371,49 @@ bool avalancheCase::store
     const sh::PeakMaps<Real>& peaks
 )
 {
-    // Good on every processor, or stored on none: the fields'
-    // boundary conditions exchange across processor patches
-    bool good = true;
-    forAll(hs, k)
-    {
-        if
-        (
-            !std::isfinite(double(hs[k])) || hs[k] < 0
-         || !std::isfinite(double(hus[k]))
-         || !std::isfinite(double(hvs[k]))
-        )
-        {
-            good = false;
-            break;
-        }
-    }
-    if (anyProcessor(!good))
-    {
-        return false;
-    }
     const scalar hDry = input.model.hDry;
     const bool plan = input.plan();
-    forAll(h, c)
+    const label n = h.size();
+    scalar* hp = h.primitiveFieldRef().data();
+    vector* hUp = hU.primitiveFieldRef().data();
+    vector* Up = U.primitiveFieldRef().data();
+    scalar* regimep = regime.primitiveFieldRef().data();
+    scalar* hMaxp = hMax.primitiveFieldRef().data();
+    scalar* UMaxp = UMax.primitiveFieldRef().data();
+    scalar* tArrivalp = tArrival.primitiveFieldRef().data();
+    scalar* pMaxp = pMax.valid() ? pMax->primitiveFieldRef().data() : nullptr;
+    scalar* Hp = plan ? H->primitiveFieldRef().data() : nullptr;
+    const scalar* Jp = plan ? planJ.cdata() : nullptr;
+    const scalar* Pp = plan ? planP.cdata() : nullptr;
+    const scalar* Qp = plan ? planQ.cdata() : nullptr;
+    #pragma omp parallel for schedule(static)
+    for (label c = 0; c < n; ++c)
     {
         const label k = smesh.gridIndex(c);
         const scalar hc = hs[k];
         const vector m(hus[k], hvs[k], 0);
-        h[c] = hc;
-        hU[c] = m;
-        U[c] = hc > 0 ? m/hc : vector::zero;
+        hp[c] = hc;
+        hUp[c] = m;
+        Up[c] = hc > 0 ? m/hc : vector::zero;
         if (plan)
         {
             // hc is H: the normal thickness H/J, the velocity along the
             // bed with its vertical component
-            H()[c] = hc;
-            h[c] = hc/planJ[c];
+            Hp[c] = hc;
+            hp[c] = hc/Jp[c];
             // (+ 0: a zero as +0, whatever the slopes' signs: OpenFOAM
             // writes a field of equal values as uniform, with the first
             // one's sign of zero for all)
-            U[c].z() = (planP[c]*U[c].x() + planQ[c]*U[c].y()) + 0.0;
+            Up[c].z() = (Pp[c]*Up[c].x() + Qp[c]*Up[c].y()) + 0.0;
         }
-        regime[c] =
+        regimep[c] =
             hc <= hDry ? 0 : (m.x() != 0 || m.y() != 0 ? 2 : 1);
-        hMax[c] = peaks.h[k];
-        UMax[c] = peaks.speed[k];
-        tArrival[c] = peaks.arrival[k];
-        if (pMax.valid())
+        hMaxp[c] = peaks.h[k];
+        UMaxp[c] = peaks.speed[k];
+        tArrivalp[c] = peaks.arrival[k];
+        if (pMaxp)
         {
-            pMax()[c] = peaks.pressure[k];
+            pMaxp[c] = peaks.pressure[k];
         }
     }
     h.correctBoundaryConditions();
@@ -413,6 +431,23 @@ bool avalancheCase::store
     {
         H->correctBoundaryConditions();
     }
+}
+
+
+template<class Real>
+bool avalancheCase::store
+(
+    const std::vector<Real>& hs,
+    const std::vector<Real>& hus,
+    const std::vector<Real>& hvs,
+    const sh::PeakMaps<Real>& peaks
+)
+{
+    if (!goodState(hs, hus, hvs))
+    {
+        return false;
+    }
+    fill(hs, hus, hvs, peaks);
     return true;
 }
 
@@ -526,6 +561,19 @@ autoPtr<avalancheCase> readCase(Time& runTime, const fvMesh& mesh)
     (                                                                         \
         const sh::Problem<Real>&                                              \
     ) const;                                                                  \
+    template bool avalancheCase::goodState<Real>                              \
+    (                                                                         \
+        const std::vector<Real>&,                                             \
+        const std::vector<Real>&,                                             \
+        const std::vector<Real>&                                              \
+    ) const;                                                                  \
+    template void avalancheCase::fill<Real>                                   \
+    (                                                                         \
+        const std::vector<Real>&,                                             \
+        const std::vector<Real>&,                                             \
+        const std::vector<Real>&,                                             \
+        const sh::PeakMaps<Real>&                                             \
+    );                                                                        \
     template bool avalancheCase::store<Real>                                  \
     (                                                                         \
         const std::vector<Real>&,                                             \

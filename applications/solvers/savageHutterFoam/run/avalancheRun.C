@@ -99,6 +99,10 @@ avalancheRun<Real>::avalancheRun
     }
 
     solver_->getState(hPrev_, hus_, hvs_);
+    // Sized (and their pages touched) now: the first write's copies cost
+    // what the later ones do
+    hs_ = hPrev_;
+    solver_->getPeakMaps(peaks_);
     if (ac_.input.plan())
     {
         openCentreOfMass();
@@ -363,12 +367,20 @@ void avalancheRun<Real>::write(const bool restart)
         return;
     }
     const wallClock::time_point callStart = wallClock::now();
-    // The fields and Time are the writer thread's until it has finished
+    // The copy from the solver and its check while the writer thread may
+    // still be writing the time before (they touch neither the fields nor
+    // Time, which are its own until it has finished)
+    solver_->getState(hs_, hus_, hvs_);
+    solver_->getPeakMaps(peaks_);
+    // Not written on any processor unless good on all
+    const bool good = ac_.goodState(hs_, hus_, hvs_);
     finishWrite();
     const double dtWrite = solver_->time() - lastWritten_;
-    solver_->getState(hs_, hus_, hvs_);
-    // Not written on any processor unless good on all (store agrees)
-    if (!ac_.store(hs_, hus_, hvs_, solver_->peakMaps()))
+    if (good)
+    {
+        ac_.fill(hs_, hus_, hvs_, peaks_);
+    }
+    else
     {
         FatalErrorInFunction
             << "The solution at t = " << solver_->time() << " is not"
