@@ -8,7 +8,8 @@
 # For the GPU machine (device tool), one call:
 #   benchmarks/planProfile.sh [k]        (k: shBenchmark -profile, default 96)
 # Results under $OUT (or build-plan/out): planProfile.md (per kernel:
-# duration, SM and DRAM throughput, DRAM bytes, occupancy, registers,
+# duration, warp instructions, SM and DRAM throughput, DRAM bytes,
+# occupancy, registers,
 # cache hit rates, cycles per issued instruction), and the whole reports
 # ncu-<case>-<precision>.txt (with the warp state statistics).
 #------------------------------------------------------------------------------
@@ -31,7 +32,8 @@ for c in wet plan; do
     for p in double float; do
         "$ncuBin" --section SpeedOfLight --section Occupancy \
             --section LaunchStats --section WarpStateStats \
-            --section MemoryWorkloadAnalysis --metrics dram__bytes.sum \
+            --section MemoryWorkloadAnalysis \
+            --metrics dram__bytes.sum,smsp__inst_executed.sum \
             -k 'regex:(predictor|flux|corrector|finish)Kernel' -c 8 \
             build-plan/benchmarks/shBenchmark -profile "$k" \
             -profileCase "$c" -precision "$p" \
@@ -42,7 +44,7 @@ done
 # are made from
 for f in "$out"/ncu-*.txt; do
     echo "## ${f##*/}"
-    grep -E "Kernel<|Kernel\(|Duration|Compute \(SM\) Throughput|DRAM Throughput|dram__bytes.sum|Achieved Occupancy|Registers Per Thread|Warp Cycles Per Issued Instruction|Theoretical Occupancy|Block Limit Registers|L1/TEX Hit Rate|L2 Hit Rate|Mem Busy|Max Bandwidth|Issue Slots Busy|Executed Ipc Active" "$f" \
+    grep -E "Kernel<|Kernel\(|smsp__inst_executed.sum|Duration|Compute \(SM\) Throughput|DRAM Throughput|dram__bytes.sum|Achieved Occupancy|Registers Per Thread|Warp Cycles Per Issued Instruction|Theoretical Occupancy|Block Limit Registers|L1/TEX Hit Rate|L2 Hit Rate|Mem Busy|Max Bandwidth|Issue Slots Busy|Executed Ipc Active" "$f" \
         | sed -E 's/\(Model.*//'
 done > "$out/planProfile.md"
 cat "$out/planProfile.md" | head -n 400
