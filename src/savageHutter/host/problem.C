@@ -2,6 +2,7 @@
 #include "modelInput.H"
 #include "padded.H"
 #include "../parallel/halo.H"
+#include "../physics/planTerrain.H"
 
 #include <algorithm>
 #include <cmath>
@@ -515,6 +516,21 @@ void HostGeometry<Real>::planMetrics(const Problem<Real>& pb)
             planBxy[c] = planBxy[k];
             planByy[c] = planByy[k];
         }
+    }
+    // The metric's scalars, by the function the stages used to form them
+    // with: the same values, once
+    for (std::vector<Real>* a : {&planJ, &planRJ, &planRJ2, &planRJ1})
+    {
+        a->assign(g.size(), Real(0));
+    }
+    for (int c = 0; c < g.size(); ++c)
+    {
+        const PlanMetric<Real> pm =
+            planMetric(planP[c], planQ[c], Real(0), Real(0), Real(0));
+        planJ[c] = pm.J;
+        planRJ[c] = pm.rJ;
+        planRJ2[c] = pm.rJ2;
+        planRJ1[c] = pm.rJ1;
     }
 }
 
