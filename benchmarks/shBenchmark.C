@@ -54,7 +54,8 @@ Description
       -precision both|double|float
       -cpuWall S            wall budget of one CPU run on a Table IV mesh
       -cpuWallLarge S       the same on the large meshes (plan wet too)
-      -plan 0|1             the plan wet row on the large mesh (default 1)
+      -plan 0|1             the plan wet row and its wet bumps row on the
+                            large mesh (default 1)
       -noCpu                GPU only
       -huge K               also the wet mesh K x K x (30 x 14) on the GPU
                             alone (K = 1544: 1.0e9 cells), to t = hugeTime,
