@@ -40,7 +40,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "testing.H"
-#include "gpuCases.H"
+#include "switchCases.H"
 
 using namespace sh;
 using namespace shtest;
@@ -50,90 +50,13 @@ namespace
 
 // * * * * * * * * * * * * * 1. Total variation * * * * * * * * * * * * * * //
 
-enum class Line { x, y };
-
-struct LineResult
-{
-    double tv = 0;      //!< sum |u_{i+1} - u_i|
-    double d2 = 0;      //!< max |u_{i+1} - 2 u_i + u_{i-1}|
-    long steps = 0;
-};
-
-LineResult compressedLine
-(
-    Line dir,
-    double phi,
-    double delta,
-    EarthPressureModel K,
-    int n
-)
-{
-    ModelInput in;
-    in.g = 9.81;
-    in.phiDeg = phi;
-    in.coulomb.deltaDeg = delta;
-    in.cfl = 0.4;
-    in.limiter = Limiter::minmod;
-    in.earthPressure = K;
-    const double L = 100, d = L/n;
-    const bool y = dir == Line::y;
-    Problem<double> pb
-    (
-        makeParams<double>(in), y ? 1 : n, y ? n : 1,
-        0, y ? 8*d : L, 0, y ? L : 8*d
-    );
-    const double slope = std::tan(30*deg);
-    if (y)
-    {
-        pb.setInclination([](double) { return 0.0; });
-        pb.setTopography([=](double, double yy) { return -slope*yy; });
-    }
-    else
-    {
-        pb.setInclination([](double) { return 30*deg; });
-    }
-    pb.setState([=](double x, double yy)
-    {
-        const double s = y ? yy : x;
-        const double h = 1 + 0.5*std::exp(-std::pow((s - 50)/15, 2));
-        const double u = 6 - 2*std::tanh((s - 50)/10);
-        return y ? Primitive{h, 0, u} : Primitive{h, u, 0};
-    });
-    CpuSolver<double> s(pb, false);
-    s.advanceTo(3);
-    std::vector<double> h, hu, hv;
-    s.getState(h, hu, hv);
-    std::vector<double> u(n);
-    for (int i = 0; i < n; ++i)
-    {
-        u[i] = h[i] > 1e-6 ? (y ? hv[i] : hu[i])/h[i] : 0;
-    }
-    LineResult r;
-    for (int i = 1; i < n; ++i)
-    {
-        r.tv += std::fabs(u[i] - u[i - 1]);
-    }
-    for (int i = 1; i + 1 < n; ++i)
-    {
-        r.d2 = std::max(r.d2, std::fabs(u[i + 1] - 2*u[i] + u[i - 1]));
-    }
-    r.steps = s.steps();
-    return r;
-}
-
+//- The lines and their runs: switchCases.H
 void totalVariation(Counter& t)
 {
     std::printf("\n1. TV of the velocity, compressed smooth flow, t = 3 s, minmod, maxCo 0.4\n");
     std::printf("%-34s %6s %8s %10s %10s %10s\n",
         "case", "cells", "steps", "TV(u)", "max|d2u|", "TV iso");
-    struct Case { const char* name; Line dir; double phi, delta; };
-    const Case cases[] =
-    {
-        {"x: zeta 30, phi 35, delta 25", Line::x, 35, 25},
-        {"y: bed slope, phi 35, delta 25", Line::y, 35, 25},
-        {"y: bed slope, delta = phi = 30", Line::y, 30, 30}
-    };
-    for (const Case& c : cases)
+    for (const SwitchLine& c : switchLines)
     {
         double tv0 = 0, spread = 0;
         for (const int n : {200, 400, 800})
@@ -158,55 +81,20 @@ void totalVariation(Counter& t)
 
 // * * * * * * * * * * * * 2. Nearly symmetric collapse * * * * * * * * * * //
 
-double collapseAsymmetry(EarthPressureModel K, double& input, long& moving)
-{
-    ModelInput in;
-    in.g = 9.81;
-    in.phiDeg = 20;
-    in.coulomb.deltaDeg = 20;
-    in.earthPressure = K;
-    const int n = 96;
-    // Cell centres in floating point: x0 + (i + 1/2) dx (Problem's)
-    Problem<double> pb = shcases::pileInBowl<double>(in, n);
-    auto asymmetry = [n](const std::vector<double>& h)
-    {
-        double a = 0;
-        for (int j = 0; j < n; ++j)
-        {
-            for (int i = 0; i < n; ++i)
-            {
-                const int c = i + n*j;
-                a = std::max(a, std::fabs(h[c] - h[(n - 1 - i) + n*j]));
-                a = std::max(a, std::fabs(h[c] - h[i + n*(n - 1 - j)]));
-            }
-        }
-        return a;
-    };
-    input = asymmetry(pb.h);
-    CpuSolver<double> s(pb, false);
-    s.advanceTo(4);
-    std::vector<double> h, hu, hv;
-    s.getState(h, hu, hv);
-    moving = 0;
-    for (std::size_t c = 0; c < h.size(); ++c)
-    {
-        moving += hu[c] != 0 || hv[c] != 0;
-    }
-    return asymmetry(h);
-}
-
 void nearlySymmetricCollapse(Counter& t)
 {
     std::printf("\n2. Nearly symmetric collapse: cone in the bowl, delta = phi = 20 deg, "
                 "96^2, walls, t = 4 s, centres in floating point\n");
     std::printf("%-14s %14s %14s %14s %8s\n",
         "K", "input asym", "final asym", "amplified", "moving");
-    double in0 = 0, inIso = 0;
-    long moving0 = 0, movingIso = 0;
-    const double ap = collapseAsymmetry(EarthPressureModel::activePassive, in0, moving0);
+    const Collapse a = nearlySymmetric(EarthPressureModel::activePassive);
+    const double in0 = a.input, ap = a.final;
+    const long moving0 = a.moving;
     std::printf("%-14s %14.3g %14.3g %14.3g %8ld\n",
         "activePassive", in0, ap, in0 > 0 ? ap/in0 : 0.0, moving0);
-    const double iso = collapseAsymmetry(EarthPressureModel::isotropic, inIso, movingIso);
+    const Collapse i = nearlySymmetric(EarthPressureModel::isotropic);
+    const double inIso = i.input, iso = i.final;
+    const long movingIso = i.moving;
     std::printf("%-14s %14.3g %14.3g %14.3g %8ld\n",
         "isotropic", inIso, iso, inIso > 0 ? iso/inIso : 0.0, movingIso);
     t.check(in0 > 0 && in0 < 1e-15,

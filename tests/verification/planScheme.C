@@ -26,8 +26,8 @@
 \*---------------------------------------------------------------------------*/
 
 #include "testing.H"
+#include "planCases.H"
 
-#include <cstring>
 #include <functional>
 
 using namespace sh;
@@ -36,7 +36,6 @@ using namespace shtest;
 namespace
 {
 
-using Bed = std::function<double(double, double)>;
 using Layer = std::function<Primitive(double, double)>;   // H, u, v
 
 template<class Real>
@@ -71,12 +70,6 @@ Problem<Real> planProblem
     return pb;
 }
 
-template<class Real>
-double minOf(const std::vector<Real>& a)
-{
-    return double(*std::min_element(a.begin(), a.end()));
-}
-
 //- n steps of dt (dt <= 0: the stable one of each step)
 template<class Real>
 Run<Real> runSteps(const Problem<Real>& pb, int n, Real dt)
@@ -93,12 +86,6 @@ Run<Real> runSteps(const Problem<Real>& pb, int n, Real dt)
     }
     s.getState(r.H, r.Hu, r.Hv);
     return r;
-}
-
-template<class Real>
-bool sameBits(Real a, Real b)
-{
-    return std::memcmp(&a, &b, sizeof a) == 0;
 }
 
 //- The same bits, or both zero (a zero momentum negated for the mirror
@@ -226,65 +213,6 @@ void transposedAndMirrored(Counter& test, const ModelInput& in, double& minH)
     test.check(mBad == 0 && moving > 0,
         std::string("c: mirror X -> -X bit for bit, ") + precision<Real>());
     minH = std::min({minH, r.minH, rt.minH, rm.minH});
-}
-
-//- The dam break of damBreak.C (h0 = 10 m, zeta = 40 deg, delta = 24.5
-//  deg, isotropic K, t = 0.5 s) on the DEM of the plane whose descent is
-//  turned by psi in plan, n x m cells on [-L, L] x [-W, W], open sides;
-//  against the exact solution (33) over the cells within W/3 of the line
-//  through the centre along the descent and 0.9 L of the centre along it
-struct DamBreak
-{
-    double e1;          //!< L1(h - exact)/L1(exact)
-    double front;       //!< largest x with h > h0/100
-    double frontExact;
-    double dx;          //!< the cell size along the slope
-    double minH;
-};
-
-DamBreak turnedDamBreak(double psi, int n, int m, double L, double W)
-{
-    ModelInput db;
-    db.g = 9.81;
-    db.earthPressure = EarthPressureModel::isotropic;
-    db.phiDeg = 40;
-    db.coulomb.deltaDeg = 24.5;
-    db.coordinates = Coordinates::plan;
-    const double h0 = 10, zeta = 40*deg, tEnd = 0.5, g = db.g;
-    const double cz = std::cos(zeta), cp = std::cos(psi), sp = std::sin(psi);
-    Problem<double> pb(makeParams<double>(db), n, m, -L, L, -W, W);
-    pb.setTopography([=](double x, double y) { return -std::tan(zeta)*(x*cp + y*sp); });
-    pb.setState([=](double x, double y)
-    {
-        return Primitive{x*cp + y*sp < 0 ? h0/cz : 0, 0, 0};
-    });
-    CpuSolver<double> s(pb, false);
-    s.advanceTo(tEnd);
-    std::vector<double> H, Hu, Hv;
-    s.getState(H, Hu, Hv);
-    DamBreak r{0, -1e30, -1e30, double(pb.grid.dx)/cz, minOf(H)};
-    double m1 = 0;
-    for (int j = 0; j < m; ++j)
-    {
-        for (int i = 0; i < n; ++i)
-        {
-            const double X = pb.grid.xc(i), Y = pb.grid.yc(j);
-            const double along = X*cp + Y*sp, across = -X*sp + Y*cp;
-            if (std::fabs(across) > W/3 || std::fabs(along) > 0.9*L)
-            {
-                continue;
-            }
-            const double x = along/cz;
-            const double h = H[pb.cell(i, j)]*cz;
-            const double ex = granularDamBreakDepth(x, tEnd, h0, g, zeta, 24.5*deg);
-            r.e1 += std::fabs(h - ex);
-            m1 += ex;
-            if (h > 0.01*h0) { r.front = std::max(r.front, x); }
-            if (ex > 0.01*h0) { r.frontExact = std::max(r.frontExact, x); }
-        }
-    }
-    r.e1 /= m1;
-    return r;
 }
 
 } // namespace

@@ -60,18 +60,15 @@
 
 #include "testing.H"
 #include "gpuCases.H"
+#include "planCases.H"
 
 #include <chrono>
-#include <cstring>
-#include <functional>
 
 using namespace sh;
 using namespace shtest;
 
 namespace
 {
-
-using Bed = std::function<double(double, double)>;
 
 double seconds()
 {
@@ -80,215 +77,10 @@ double seconds()
     return std::chrono::duration<double>(clock::now() - t0).count();
 }
 
-//- J = sqrt(1 + |grad b|^2) of a bed function by centred differences
-double jacobian(const Bed& b, double X, double Y, double e = 1e-4)
-{
-    const double p = (b(X + e, Y) - b(X - e, Y))/(2*e);
-    const double q = (b(X, Y + e) - b(X, Y - e))/(2*e);
-    return std::sqrt(1 + p*p + q*q);
-}
-
-bool sameBits(double a, double b)
-{
-    return std::memcmp(&a, &b, sizeof a) == 0;
-}
-
 // ---------------------------------------------------------------------------
-// (a) energy line
+// (a) energy line (the DEMs, the release and the run to rest: planCases.H)
 // ---------------------------------------------------------------------------
 
-//- The channel's axis: straight along +X to X = L1, a circular arc of
-//  radius R turning left by 90 deg (centre (L1, R)), straight along +Y.
-//  locate: the arc length sigma of the nearest axis point and the
-//  distance d to it
-struct BendAxis
-{
-    double L1 = 100;
-    double R = 150;
-
-    void locate(double X, double Y, double& sigma, double& d) const
-    {
-        // the straight part before the arc (and its continuation upwards)
-        const double xa = std::min(X, L1);
-        d = std::hypot(X - xa, Y);
-        sigma = xa;
-        // the arc
-        double a = std::atan2(Y - R, X - L1);
-        a = std::max(-pi/2, std::min(0.0, a));
-        const double da = std::hypot(X - L1 - R*std::cos(a), Y - R - R*std::sin(a));
-        if (da < d)
-        {
-            d = da;
-            sigma = L1 + R*(a + pi/2);
-        }
-        // the straight part after it
-        const double yc = std::max(Y, R);
-        const double dc = std::hypot(X - L1 - R, Y - yc);
-        if (dc < d)
-        {
-            d = dc;
-            sigma = L1 + R*pi/2 + (yc - R);
-        }
-    }
-};
-
-//- A profile z = H0 (1 - s/s1)^2 that flattens at s = s1 (and is 0 after)
-double parabola(double s, double H0, double s1)
-{
-    const double r = s < s1 ? 1 - s/s1 : 0;
-    return H0*r*r;
-}
-
-struct Travel
-{
-    double gamma = 0;       //!< [deg]
-    double s = 0;           //!< horizontal path of the centre of mass
-    double dz = 0;          //!< its drop
-    double dzMid = 0;       //!< the drop of the layer's centroid
-                            //!< b + h cos(theta)/2 (printed)
-    double gammaMid = 0;    //!< atan(dzMid/s) [deg]
-    //- The friction's path: the time integral of the mean of cos(theta)
-    //  |V| (|V| the 3D speed) over the volume, so that the friction's work
-    //  per unit mass is mu g sFriction (lambda = 0); it equals the
-    //  horizontal path only for motion along the fall line
-    double sFriction = 0;
-    double gammaFriction = 0;   //!< atan(dzMid/sFriction) [deg]
-    double t = 0;
-    long steps = 0;
-    bool rest = false;
-    double v0 = 0, v1 = 0;  //!< volumes at release and at rest
-    double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-    std::vector<double> peakH;
-};
-
-//- Run to rest (no cell with non-zero momentum) or tMax, the centre of
-//  mass of H dX dY at (X, Y, b) after every step
-Travel travel(const Problem<double>& pb, double tMax)
-{
-    CpuSolver<double> s(pb, false);
-    const int nx = pb.grid.nx, ny = pb.grid.ny;
-    std::vector<double> X(pb.nCells()), Y(pb.nCells());
-    for (int j = 0; j < ny; ++j)
-    {
-        for (int i = 0; i < nx; ++i)
-        {
-            X[pb.cell(i, j)] = pb.grid.xc(i);
-            Y[pb.cell(i, j)] = pb.grid.yc(j);
-        }
-    }
-    // 1/J^2 = cos^2(theta) of the cells (the plan metrics' slopes)
-    std::vector<double> rJ2(pb.nCells()), P(pb.nCells()), Q(pb.nCells());
-    {
-        const HostGeometry<double> geo(pb);
-        for (int j = 0; j < ny; ++j)
-        {
-            for (int i = 0; i < nx; ++i)
-            {
-                const int k = (i + 2) + (j + 2)*(nx + 4);
-                rJ2[pb.cell(i, j)] = 1/(1 + geo.planP[k]*geo.planP[k] + geo.planQ[k]*geo.planQ[k]);
-                P[pb.cell(i, j)] = geo.planP[k];
-                Q[pb.cell(i, j)] = geo.planQ[k];
-            }
-        }
-    }
-    // volume, centre (X, Y, b) and the centroid's elevation b + h cos/2
-    // (h cos(theta) = H/J^2)
-    const auto com = [&](const std::vector<double>& H, double c[5])
-    {
-        c[0] = c[1] = c[2] = c[3] = c[4] = 0;
-        for (std::size_t k = 0; k < H.size(); ++k)
-        {
-            c[0] += H[k];
-            c[1] += H[k]*X[k];
-            c[2] += H[k]*Y[k];
-            c[3] += H[k]*double(pb.zb[k]);
-            c[4] += H[k]*(double(pb.zb[k]) + 0.5*H[k]*rJ2[k]);
-        }
-        c[1] /= c[0];
-        c[2] /= c[0];
-        c[3] /= c[0];
-        c[4] /= c[0];
-    };
-    Travel r;
-    std::vector<double> H, Hu, Hv;
-    double c0[5], c[5], cPrev[5];
-    com(pb.h, c0);
-    std::copy(c0, c0 + 5, cPrev);
-    while (s.time() < tMax)
-    {
-        s.step(s.stableDt());
-        s.getState(H, Hu, Hv);
-        com(H, c);
-        r.s += std::hypot(c[1] - cPrev[1], c[2] - cPrev[2]);
-        double work = 0;
-        for (std::size_t k = 0; k < H.size(); ++k)
-        {
-            if (H[k] > pb.params.hDry)
-            {
-                const double u = Hu[k]/H[k], v = Hv[k]/H[k];
-                const double w = P[k]*u + Q[k]*v;
-                work += H[k]*std::sqrt(rJ2[k]*(u*u + v*v + w*w));
-            }
-        }
-        r.sFriction += s.lastDt()*work/c[0];
-        std::copy(c, c + 5, cPrev);
-        if (s.diagnostics().movingCells == 0)
-        {
-            r.rest = true;
-            break;
-        }
-    }
-    const double dA = double(pb.grid.dx)*pb.grid.dy;
-    r.dz = c0[3] - cPrev[3];
-    r.gamma = std::atan2(r.dz, r.s)/deg;
-    r.dzMid = c0[4] - cPrev[4];
-    r.gammaMid = std::atan2(r.dzMid, r.s)/deg;
-    r.gammaFriction = std::atan2(r.dzMid, r.sFriction)/deg;
-    r.t = s.time();
-    r.steps = s.steps();
-    r.v0 = c0[0]*dA;
-    r.v1 = cPrev[0]*dA;
-    r.x0 = c0[1];
-    r.y0 = c0[2];
-    r.x1 = cPrev[1];
-    r.y1 = cPrev[2];
-    r.peakH = toDouble(s.peakMaps().h);
-    return r;
-}
-
-ModelInput energyLineInput()
-{
-    ModelInput in;
-    in.g = 9.81;
-    in.lambda = 0;
-    in.earthPressure = EarthPressureModel::isotropic;
-    in.phiDeg = 30;
-    in.coulomb.deltaDeg = std::atan(0.4)/deg;
-    in.coordinates = Coordinates::plan;
-    return in;
-}
-
-//- An elliptic paraboloid of normal thickness h0 and half-axes a (along
-//  X), c (along Y) centred at (xc, yc), as H = J h
-Problem<double> releaseOn
-(
-    const Bed& bed,
-    int nx, int ny, double x0, double x1, double y0, double y1,
-    double xc, double yc, double a, double c, double h0
-)
-{
-    Problem<double> pb(makeParams<double>(energyLineInput()), nx, ny, x0, x1, y0, y1);
-    pb.setTopography(bed);
-    pb.setState([=](double X, double Y)
-    {
-        const double r2 = (X - xc)*(X - xc)/(a*a) + (Y - yc)*(Y - yc)/(c*c);
-        const double h = r2 < 1 ? h0*(1 - r2) : 0;
-        return Primitive{h*jacobian(bed, X, Y), 0, 0};
-    });
-    return pb;
-}
-
-const double gammaTarget = std::atan(0.4)/deg;
 const double gammaBound = 0.25;
 
 void report(Counter& test, const char* name, const Travel& r, double wall, bool assert = true)
@@ -324,204 +116,56 @@ void energyLine(Counter& test, int f)
     {
         const double t0 = seconds();
         const BendAxis axis;
-        const double k = 20.0/(40*40), W = 40;
-        const Bed bed = [=](double X, double Y)
-        {
-            double sigma, d;
-            axis.locate(X, Y, sigma, d);
-            return parabola(sigma, 150, 400) + k*d*d;
-        };
-        const Problem<double> pb = releaseOn
-        (
-            bed, 68*f, 64*f, -40, 300, -60, 260, 30, 0, 25, 15, 4
-        );
+        const Problem<double> pb = bendRelease(f);
         const Travel r = travel(pb, 200);
         std::snprintf(name, sizeof name, "(i) channel bend%s", tag);
         report(test, name, r, seconds() - t0, assert);
-        long wet = 0, in = 0;
-        double sigmaMax = -1e30;
-        for (int j = 0; j < pb.grid.ny; ++j)
-        {
-            for (int i = 0; i < pb.grid.nx; ++i)
-            {
-                if (r.peakH[pb.cell(i, j)] <= 0.01)
-                {
-                    continue;
-                }
-                double sigma, d;
-                axis.locate(pb.grid.xc(i), pb.grid.yc(j), sigma, d);
-                ++wet;
-                in += d <= W;
-                sigmaMax = std::max(sigmaMax, sigma);
-            }
-        }
-        const double frac = 100.0*in/std::max(wet, 1L);
-        const double turned = (std::min(sigmaMax, axis.L1 + axis.R*pi/2) - axis.L1)/axis.R/deg;
+        const Footprint fp = bendFootprint(pb, r.peakH);
         std::printf("a  (i) channel bend: footprint (cells with peak h > 1 cm) %ld cells,"
             " in banks (|d| <= %.0f m) %.1f %%, bound 99 %%; furthest along the axis"
             " sigma = %.1f m (the arc: %.1f to %.1f m), axis turned there %.1f deg\n",
-            wet, W, frac, sigmaMax, axis.L1, axis.L1 + axis.R*pi/2, turned);
+            fp.wet, bendBanks, fp.frac, fp.sigmaMax, axis.L1, axis.L1 + axis.R*pi/2, fp.turned);
         if (assert)
         {
-            test.check(frac >= 99, "a: (i) channel bend: >= 99 % of the footprint within the banks");
-            test.check(turned >= 90, "a: (i) channel bend: the flow passes the whole 90 deg turn");
+            test.check(fp.frac >= 99, "a: (i) channel bend: >= 99 % of the footprint within the banks");
+            test.check(fp.turned >= 90, "a: (i) channel bend: the flow passes the whole 90 deg turn");
         }
     }
 
     // (ii) a chute along X into a bowl 60 m off its line
     {
         const double t0 = seconds();
-        const double xb = 360, yb = 60, Rb = 140, D = 25;
-        const Bed bed = [=](double X, double Y)
-        {
-            const double r2 = ((X - xb)*(X - xb) + (Y - yb)*(Y - yb))/(Rb*Rb);
-            const double bowl = r2 < 1 ? -D*(1 - r2)*(1 - r2) : 0;
-            return parabola(X, 160, 360) + bowl;
-        };
-        const Problem<double> pb = releaseOn
-        (
-            bed, 104*f, 64*f, 0, 520, -100, 220, 40, 0, 25, 15, 4
-        );
+        const Bowl w;
+        const Problem<double> pb = bowlRelease(f);
         const Travel r = travel(pb, 200);
         std::snprintf(name, sizeof name, "(ii) bowl%s", tag);
         report(test, name, r, seconds() - t0, assert);
         std::printf("a  (ii) bowl: centre (%.0f, %.0f) m, radius %.0f m, depth %.0f m;"
             " the centre of mass at rest %.1f m from the bowl's centre\n",
-            xb, yb, Rb, D, std::hypot(r.x1 - xb, r.y1 - yb));
+            w.xb, w.yb, w.Rb, w.D, std::hypot(r.x1 - w.xb, r.y1 - w.yb));
     }
 
     // (iii) a parabolic chute z = 200 (1 - X/500)^2, flat beyond X = 500
     {
         const double t0 = seconds();
-        const Bed bed = [](double X, double) { return parabola(X, 200, 500); };
-        const Problem<double> pb = releaseOn
-        (
-            bed, 112*f, 40*f, 0, 560, -100, 100, 60, 0, 25, 20, 3
-        );
+        const Problem<double> pb = chuteRelease(f);
         const Travel r = travel(pb, 200);
         std::snprintf(name, sizeof name, "(iii) chute%s", tag);
         report(test, name, r, seconds() - t0, assert);
     }
 }
 
+
 // ---------------------------------------------------------------------------
-// (b) rest states
+// (b) rest states (the DEM, the lakes and the held layer: planCases.H)
 // ---------------------------------------------------------------------------
-
-const double restPsi = 30*deg;      //!< descent of the plane in plan
-const double restTheta = 12*deg;    //!< its inclination
-
-double along(double X, double Y)
-{
-    return X*std::cos(restPsi) + Y*std::sin(restPsi);
-}
-
-double across(double X, double Y)
-{
-    return -X*std::sin(restPsi) + Y*std::cos(restPsi);
-}
-
-//- 0 for a >= a0, 1 for a <= a1 (a1 < a0), C2 in between
-double window(double a, double a0, double a1)
-{
-    const double t = std::max(0.0, std::min(1.0, (a0 - a)/(a0 - a1)));
-    return t*t*t*(10 - 15*t + 6*t*t);
-}
-
-//- The plane b = -tan(theta) along for along > -40 m and a flat shelf
-//  above it (the kink at along = -40 m), and on the shelf (windowed in
-//  from along = -40 to -60 m) a bowl (a Gaussian dip 6 m deep, 20 m wide,
-//  centred at (-60, -85)) and a bend (a channel 5 m deep, 12 m wide, round
-//  the circle of radius 50 about (-100, 0): a 180 deg turn in the domain)
-double restBed(double X, double Y)
-{
-    const double a = along(X, Y);
-    const double plane = -std::tan(restTheta)*std::max(a, -40.0);
-    const double bowl = -6*std::exp(-((X + 60)*(X + 60) + (Y + 85)*(Y + 85))/(20*20));
-    const double d = std::hypot(X + 100, Y) - 50;
-    const double bend = 5*d*d/(d*d + 12*12) - 5;
-    return plane + window(a, -40, -60)*(bowl + bend);
-}
-
-struct Rest
-{
-    double maxMomentum = 0;     //!< largest |H u|, |H v| after the steps
-    long changed = 0;           //!< cells whose H is not the same bits
-    long wet = 0;
-    double maxSpeed = 0;        //!< largest plan speed
-    double dt = 0;              //!< the last step
-};
-
-Rest restRun(const Problem<double>& pb, int steps)
-{
-    CpuSolver<double> s(pb, false);
-    for (int k = 0; k < steps; ++k)
-    {
-        s.step(s.stableDt());
-    }
-    std::vector<double> H, Hu, Hv;
-    s.getState(H, Hu, Hv);
-    Rest r;
-    r.dt = s.lastDt();
-    for (std::size_t k = 0; k < H.size(); ++k)
-    {
-        r.maxMomentum = std::max({r.maxMomentum, std::fabs(Hu[k]), std::fabs(Hv[k])});
-        r.changed += !sameBits(H[k], double(pb.h[k]));
-        r.wet += H[k] > pb.params.hDry;
-        if (H[k] > 1e-3)
-        {
-            r.maxSpeed = std::max(r.maxSpeed, std::hypot(Hu[k], Hv[k])/H[k]);
-        }
-    }
-    return r;
-}
-
-//- The steepest slope |grad b| of the cells (the plan metrics' centred
-//  differences, interior cells) and of the bed sampled every 0.25 m
-void steepest(const Problem<double>& pb, const Bed& bed, double& cells, double& fine)
-{
-    const HostGeometry<double> geo(pb);
-    const int nx = pb.grid.nx, ny = pb.grid.ny, w = nx + 4;
-    cells = 0;
-    for (int j = 0; j < ny; ++j)
-    {
-        for (int i = 0; i < nx; ++i)
-        {
-            const int k = (i + 2) + (j + 2)*w;
-            cells = std::max(cells, std::hypot(geo.planP[k], geo.planQ[k]));
-        }
-    }
-    fine = 0;
-    const double x0 = pb.grid.xc(0) - 0.5*pb.grid.dx, y0 = pb.grid.yc(0) - 0.5*pb.grid.dy;
-    const double xl = nx*double(pb.grid.dx), yl = ny*double(pb.grid.dy);
-    for (double y = y0; y <= y0 + yl; y += 0.25)
-    {
-        for (double x = x0; x <= x0 + xl; x += 0.25)
-        {
-            const double e = 1e-3;
-            fine = std::max(fine, std::hypot
-            (
-                (bed(x + e, y) - bed(x - e, y))/(2*e),
-                (bed(x, y + e) - bed(x, y - e))/(2*e)
-            ));
-        }
-    }
-}
 
 void restStates(Counter& test)
 {
-    const int n = 50, steps = 200;
-    const double L = 100;
+    const int n = restN, steps = restSteps;
 
-    // (1) frictionless lakes
-    ModelInput lake;
-    lake.g = 9.81;
-    lake.earthPressure = EarthPressureModel::isotropic;
-    lake.phiDeg = 30;
-    lake.coulomb.deltaDeg = 0;
-    lake.coordinates = Coordinates::plan;
-    // A lake of the surface eta = h cos(theta) + b over the DEM bed on
-    // n x n cells, open sides.  On a sloping plane the balanced variable
+    // (1) frictionless lakes (planCases.H restLakes): n x n cells, open
+    // sides.  On a sloping plane the balanced variable
     // eps K H/J^2 + b = eta of the initial state holds to round-off only
     // (H, J^2 and b are rounded), so that section 5's balance on planes
     // can hold to round-off, not bit for bit (that needs p = q = 0: the
@@ -529,70 +173,22 @@ void restStates(Counter& test)
     // 10 N eps c, c = sqrt(g h) of the deepest cell (round-off growing
     // at most linearly over the N steps); printed: the largest momentum
     // and the cells whose H changed
-    const auto lakeOn = [&](const char* what, const Bed& bed, double eta, double ct, bool assert)
+    for (const Lake& c : restLakes())
     {
-        Problem<double> pb(makeParams<double>(lake), n, n, -L, L, -L, L);
-        pb.setTopography(bed);
         double hMax = 0;
-        pb.setState([&](double X, double Y)
-        {
-            const double h = std::max(0.0, (eta - bed(X, Y))/ct);
-            hMax = std::max(hMax, h);
-            return Primitive{h/ct, 0, 0};
-        });
+        const Problem<double> pb = lakeProblem(c, hMax);
         const Rest r = restRun(pb, steps);
-        const double bound = 10*steps*2.2e-16*std::sqrt(lake.g*hMax);
+        const double bound = lakeBound(steps, hMax);
         std::printf("b1 lake %s, %ld wet cells, deepest %.1f m, %d steps (last dt"
             " %.3g s): max |H u|, |H v| = %.3g m2/s, cells with H changed %ld"
             " (printed); largest speed %.3g m/s (round-off bound 10 N"
-            " eps sqrt(g h) = %.3g m/s)%s\n", what, r.wet, hMax, steps, r.dt,
-            r.maxMomentum, r.changed, r.maxSpeed, bound,
-            assert ? "" : "; not asserted");
-        if (assert)
-        {
-            test.check(r.maxSpeed < bound,
-                std::string("b: (1) lake ") + what + ": at rest to round-off");
-        }
-    };
-    {
-        // on the plane below the features, shoreline at along = 20 m
-        const double ct = std::cos(restTheta);
-        lakeOn("on the 12 deg plane turned 30 deg below the bend, bowl and kink,"
-            " shoreline at along = 20 m", restBed, -std::tan(restTheta)*20, ct, true);
-        // a whole plane of 25 deg, descent turned by 135 deg, all wet
-        const double th = 25*deg, ps = 135*deg, ct2 = std::cos(th);
-        const Bed bed = [=](double X, double Y)
-        {
-            return -std::tan(th)*(X*std::cos(ps) + Y*std::sin(ps));
-        };
-        lakeOn("over a whole 25 deg plane turned 135 deg", bed, bed(L, -L) + 2*ct2, ct2, true);
-        // the plane of 12 deg turned by 135 deg: the shoreline (along =
-        // 20 m) runs diagonally and meets the open sides where the
-        // edge cell's inner neighbour is dry; there the ghost cells
-        // continue the lake's level surface eps K H/J^2 + b (physics/
-        // grid.H openGhostThickness), not h linearly (which moved this
-        // lake at 2.75 m/s)
-        const Bed bed135 = [=](double X, double Y)
-        {
-            return -std::tan(restTheta)*(X*std::cos(ps) + Y*std::sin(ps));
-        };
-        lakeOn("on the 12 deg plane turned 135 deg, its shoreline meeting the"
-            " open sides", bed135, -std::tan(restTheta)*20, ct, true);
+            " eps sqrt(g h) = %.3g m/s)\n", c.what.c_str(), r.wet, hMax, steps, r.dt,
+            r.maxMomentum, r.changed, r.maxSpeed, bound);
+        test.check(r.maxSpeed < bound, "b: (1) lake " + c.what + ": at rest to round-off");
     }
     {
-        // the bowl filled 3 m deep at its centre: eps K H/J^2 + b = eta
-        // (the balanced variable of the scheme); cos(theta) varies, so
-        // section 5 expects a balance to O(dx^2) only: printed
-        const double eta = restBed(-60, -85) + 3;
-        Problem<double> pb(makeParams<double>(lake), n, n, -L, L, -L, L);
-        pb.setTopography(restBed);
-        pb.setState([&](double X, double Y)
-        {
-            const double J = jacobian(restBed, X, Y);
-            const bool inBowl = std::hypot(X + 60, Y + 85) < 30;
-            return Primitive{inBowl ? J*J*std::max(0.0, eta - restBed(X, Y)) : 0, 0, 0};
-        });
-        const Rest r = restRun(pb, steps);
+        // the bowl lake: balanced to O(dx^2) only (planCases.H bowlLake)
+        const Rest r = restRun(bowlLake(), steps);
         std::printf("b1 lake in the bowl, 3 m deep (inclination varies: balanced"
             " to O(dx^2), section 5; not asserted), %d steps: max |H u|, |H v| ="
             " %.3g m2/s, largest speed %.3g m/s\n", steps, r.maxMomentum, r.maxSpeed);
@@ -607,22 +203,7 @@ void restStates(Counter& test)
         for (const EarthPressureModel K :
              {EarthPressureModel::activePassive, EarthPressureModel::isotropic})
         {
-            ModelInput hold;
-            hold.g = 9.81;
-            hold.earthPressure = K;
-            hold.phiDeg = 30;
-            hold.coulomb.deltaDeg = delta;
-            hold.coordinates = Coordinates::plan;
-            Problem<double> pb(makeParams<double>(hold), n, n, -L, L, -L, L);
-            pb.setTopography([](double X, double Y)
-            {
-                return restBed(X, Y)*(1 + 1e-15*std::sin(7*X + 3*Y));
-            });
-            pb.setState([](double X, double Y)
-            {
-                const double h = 1 + 0.2*std::sin(0.05*X)*std::cos(0.04*Y);
-                return Primitive{jacobian(restBed, X, Y)*h*(1 + 1e-15*std::cos(5*X - 2*Y)), 0, 0};
-            });
+            const Problem<double> pb = heldLayer(delta, K);
             double cells, slope;
             steepest(pb, restBed, cells, slope);
             const Rest r = restRun(pb, steps);
@@ -647,6 +228,7 @@ void restStates(Counter& test)
         }
     }
 }
+
 
 // ---------------------------------------------------------------------------
 // (c) section 5.3 as a DEM
@@ -836,159 +418,48 @@ void inclinedPlaneAsDem(Counter& test)
 }
 
 // ---------------------------------------------------------------------------
-// (d) the parabolic cap on a turned plane
+// (d) the parabolic cap on a turned plane (its run: planCases.H)
 // ---------------------------------------------------------------------------
-
-//- Moments of a state on the turned plane, in the plane's own
-//  coordinates: xi along the descent (in-plane distance from the
-//  origin), eta across it; weights H dX dY (= h dA in the plane)
-struct CapMoments
-{
-    double volume = 0;
-    double xi = 0, eta = 0;         //!< centre of mass
-    double varXi = 0, varEta = 0;   //!< second central moments
-    double skewEta = 0;             //!< third central moment of eta / sd^3
-};
-
-void planeCoordinates(double X, double Y, double theta, double psi, double& xi, double& eta)
-{
-    xi = (X*std::cos(psi) + Y*std::sin(psi))/std::cos(theta);
-    eta = -X*std::sin(psi) + Y*std::cos(psi);
-}
-
-CapMoments capMoments(const Problem<double>& pb, const std::vector<double>& H, double theta, double psi)
-{
-    CapMoments m;
-    double s[3] = {0, 0, 0};
-    for (int pass = 0; pass < 2; ++pass)
-    {
-        for (int j = 0; j < pb.grid.ny; ++j)
-        {
-            for (int i = 0; i < pb.grid.nx; ++i)
-            {
-                const double w = H[pb.cell(i, j)];
-                double xi, eta;
-                planeCoordinates(pb.grid.xc(i), pb.grid.yc(j), theta, psi, xi, eta);
-                if (pass == 0)
-                {
-                    m.volume += w;
-                    m.xi += w*xi;
-                    m.eta += w*eta;
-                }
-                else
-                {
-                    const double a = xi - m.xi, c = eta - m.eta;
-                    s[0] += w*a*a;
-                    s[1] += w*c*c;
-                    s[2] += w*c*c*c;
-                }
-            }
-        }
-        if (pass == 0)
-        {
-            m.xi /= m.volume;
-            m.eta /= m.volume;
-        }
-    }
-    m.varXi = s[0]/m.volume;
-    m.varEta = s[1]/m.volume;
-    m.skewEta = s[2]/m.volume/std::pow(m.varEta, 1.5);
-    m.volume *= double(pb.grid.dx)*pb.grid.dy;
-    return m;
-}
 
 void capOnTurnedPlane(Counter& test)
 {
     const double t0 = seconds();
-    const double g = 9.81, theta = 30*deg, psi = 30*deg;
-    const double R0 = 20, h0 = 2, beta = g*std::cos(theta);
-    const double tEnd = 3;
-    // the exact solution at time t: h normal to the bed at (xi, eta)
-    const auto radius = [=](double t) { return std::sqrt(R0*R0 + 2*beta*h0*t*t); };
-    const auto centre = [=](double t) { return 0.5*g*std::sin(theta)*t*t; };
-    const auto exact = [=](double xi, double eta, double t)
-    {
-        const double R = radius(t), a = xi - centre(t);
-        const double r2 = (a*a + eta*eta)/(R*R);
-        return r2 < 1 ? h0*(R0/R)*(R0/R)*(1 - r2) : 0.0;
-    };
-    ModelInput in;
-    in.g = g;
-    in.earthPressure = EarthPressureModel::isotropic;
-    in.phiDeg = 30;
-    in.coulomb.deltaDeg = 0;
-    in.coordinates = Coordinates::plan;
-    const int n = 100;
-    Problem<double> pb(makeParams<double>(in), n, n, -40, 60, -40, 60);
-    pb.setTopography([=](double X, double Y)
-    {
-        return -std::tan(theta)*(X*std::cos(psi) + Y*std::sin(psi));
-    });
-    pb.setState([=](double X, double Y)
-    {
-        double xi, eta;
-        planeCoordinates(X, Y, theta, psi, xi, eta);
-        return Primitive{exact(xi, eta, 0)/std::cos(theta), 0, 0};
-    });
-    CpuSolver<double> s(pb, false);
-    const CapMoments m0 = capMoments(pb, toDouble(pb.h), theta, psi);
-    std::vector<double> H, Hu, Hv;
-    s.advanceTo(0.5*tEnd);
-    s.getState(H, Hu, Hv);
-    const CapMoments mh = capMoments(pb, H, theta, psi);
-    s.advanceTo(tEnd);
-    s.getState(H, Hu, Hv);
-    const CapMoments m1 = capMoments(pb, H, theta, psi);
-    double l1 = 0, l1ex = 0;
-    for (int j = 0; j < n; ++j)
-    {
-        for (int i = 0; i < n; ++i)
-        {
-            double xi, eta;
-            planeCoordinates(pb.grid.xc(i), pb.grid.yc(j), theta, psi, xi, eta);
-            const double ex = exact(xi, eta, tEnd);
-            l1 += std::fabs(H[pb.cell(i, j)]*std::cos(theta) - ex);
-            l1ex += ex;
-        }
-    }
-    l1 /= l1ex;
-    const double travel = m1.xi - m0.xi, travelEx = centre(tEnd);
-    const double accel = 4*(m1.xi - 2*mh.xi + m0.xi)/(tEnd*tEnd);
-    const double accelEx = g*std::sin(theta);
-    // the exact cap's second moments: R^2/6 along and across
-    const double R = radius(tEnd);
-    const double rXi = std::sqrt(6*m1.varXi), rEta = std::sqrt(6*m1.varEta);
-    const double rXi0 = std::sqrt(6*m0.varXi), rEta0 = std::sqrt(6*m0.varEta);
+    const TurnedCap c;
+    const CapRun r = runTurnedCap(c);
+    const CapMoments& m0 = r.m0;
+    const CapMoments& m1 = r.m1;
+    const double R = r.R;
     std::printf("d  parabolic cap R0 = %.0f m, h0 = %.0f m on a frictionless %.0f deg"
         " plane turned %.0f deg in plan, isotropic K, %dx%d cells of %.1f m, t ="
-        " %.1f s (%ld steps); volume %.3f -> %.3f m3\n", R0, h0, theta/deg,
-        psi/deg, n, n, double(pb.grid.dx), s.time(), s.steps(), m0.volume, m1.volume);
+        " %.1f s (%ld steps); volume %.3f -> %.3f m3\n", c.R0, c.h0, c.theta/deg,
+        c.psi/deg, c.n, c.n, r.dx, r.t, r.end.steps, m0.volume, m1.volume);
     std::printf("d  centre of mass travel along the descent %.4f m, exact %.4f m"
         " (relative error %.2e, bound 5e-3); acceleration from t = 0, %.2f,"
         " %.2f s %.5f m/s2, exact g sin(theta) = %.5f m/s2 (relative error"
-        " %.2e, bound 5e-3)\n", travel, travelEx, std::fabs(travel - travelEx)/travelEx,
-        0.5*tEnd, tEnd, accel, accelEx, std::fabs(accel - accelEx)/accelEx);
+        " %.2e, bound 5e-3)\n", r.travel, r.travelEx, std::fabs(r.travel - r.travelEx)/r.travelEx,
+        0.5*c.tEnd, c.tEnd, r.accel, r.accelEx, std::fabs(r.accel - r.accelEx)/r.accelEx);
     std::printf("d  spreading: sqrt(6 var) along the descent %.4f m, across %.4f m,"
         " exact R(t) = %.4f m (relative errors %.2e, %.2e, bound 2e-2; at t = 0"
         " %.4f, %.4f, R0 = %.0f); along/across - 1 = %.2e (bound 1e-2)\n",
-        rXi, rEta, R, std::fabs(rXi - R)/R, std::fabs(rEta - R)/R, rXi0,
-        rEta0, R0, rXi/rEta - 1);
+        r.rXi, r.rEta, R, std::fabs(r.rXi - R)/R, std::fabs(r.rEta - R)/R, r.rXi0,
+        r.rEta0, c.R0, r.rXi/r.rEta - 1);
     std::printf("d  symmetry about the descent: centre of mass across %.3e m"
         " (|.|/R bound 1e-3), skewness across %.3e (bound 1e-2); L1(h -"
         " exact)/L1(exact) = %.3e (bound 5e-2); %.1f s wall\n", m1.eta,
-        m1.skewEta, l1, seconds() - t0);
-    test.check(std::fabs(travel - travelEx) < 5e-3*travelEx,
+        m1.skewEta, r.l1, seconds() - t0);
+    test.check(std::fabs(r.travel - r.travelEx) < 5e-3*r.travelEx,
         "d: cap: centre of mass travel within 0.5 % of g sin(theta) t^2/2");
-    test.check(std::fabs(accel - accelEx) < 5e-3*accelEx,
+    test.check(std::fabs(r.accel - r.accelEx) < 5e-3*r.accelEx,
         "d: cap: centre of mass acceleration within 0.5 % of g sin(theta)");
-    test.check(std::fabs(rXi - R) < 2e-2*R && std::fabs(rEta - R) < 2e-2*R,
+    test.check(std::fabs(r.rXi - R) < 2e-2*R && std::fabs(r.rEta - R) < 2e-2*R,
         "d: cap: spreading along and across within 2 % of the similarity solution's R(t)");
-    test.check(std::fabs(rXi/rEta - 1) < 1e-2,
+    test.check(std::fabs(r.rXi/r.rEta - 1) < 1e-2,
         "d: cap: spreading along and across the descent alike within 1 %");
     test.check(std::fabs(m1.eta) < 1e-3*R && std::fabs(m1.skewEta) < 1e-2,
         "d: cap: symmetric about the descent (centre of mass, skewness)");
-    test.check(l1 < 5e-2, "d: cap: L1 error of h below 5 % of the similarity solution's");
+    test.check(r.l1 < 5e-2, "d: cap: L1 error of h below 5 % of the similarity solution's");
 }
+
 
 } // namespace
 

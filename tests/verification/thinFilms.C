@@ -37,41 +37,13 @@
 \*---------------------------------------------------------------------------*/
 
 #include "testing.H"
+#include "thinFilmCases.H"
 
 using namespace sh;
 using namespace shtest;
 
 namespace
 {
-
-struct Speeds
-{
-    double all = 0;     //!< largest UMax where hMax > 1e-4 m
-    double body = 0;    //!< largest UMax where hMax >= 5 % of the peak
-};
-
-Speeds peakSpeeds(Solver<double>& s)
-{
-    const PeakMaps<double> pm = s.peakMaps();
-    double hPeak = 0;
-    for (const double h : pm.h)
-    {
-        hPeak = std::max(hPeak, h);
-    }
-    Speeds r;
-    for (std::size_t c = 0; c < pm.h.size(); ++c)
-    {
-        if (pm.h[c] > 1e-4)
-        {
-            r.all = std::max(r.all, pm.speed[c]);
-        }
-        if (pm.h[c] >= 0.05*hPeak)
-        {
-            r.body = std::max(r.body, pm.speed[c]);
-        }
-    }
-    return r;
-}
 
 //- The peak speed map against the body's and against the speed of a
 //  frictionless fall through the largest drop of the domain, dz, from
@@ -86,7 +58,7 @@ void checkMaps
     double head
 )
 {
-    const double fall = std::sqrt(2*g*(dz + head));
+    const double fall = frictionlessFall(g, dz, head);
     std::printf("  UMax: %.2f m/s over the cells that were wet, %.2f m/s over the body; "
                 "a frictionless fall through %.1f m from rest: %.2f m/s\n",
         u.all, u.body, dz, fall);
@@ -96,67 +68,21 @@ void checkMaps
         name + fmt(": no peak speed beyond the frictionless fall (%.2f <= %.2f)", u.all, fall));
 }
 
-//- The drop of the reference surface from x0 to x1, int sin(zeta) dx
-double drop(double (*zeta)(double), double x0, double x1)
-{
-    const int n = 10000;
-    double s = 0;
-    for (int k = 0; k < n; ++k)
-    {
-        s += std::sin(zeta(x0 + (k + 0.5)*(x1 - x0)/n));
-    }
-    return s*(x1 - x0)/n;
-}
-
-double planeZeta(double x)
-{
-    const double z0 = 35*deg;
-    return x <= 17.5 ? z0 : (x < 21.5 ? z0*(1 - (x - 17.5)/4) : 0.0);
-}
-
-double chuteZeta(double x)
-{
-    return (x < 600 ? 31.0 : (x < 900 ? 31.0 - 26.0*(x - 600)/300 : 5.0))*deg;
-}
-
-//- Kept in one piece: one verification scenario read top to bottom (set-up,
-//  run, table, assertions).
+//- One verification scenario read top to bottom (run, table, assertions);
+//  its set-up and measures in thinFilmCases.H
 void chute(Counter& test, bool voellmy)
 {
-    ModelInput in;
-    in.g = 9.81;
-    in.lambda = 0;
-    in.phiDeg = 35;
-    in.coulomb.deltaDeg = 19;
-    if (voellmy)
-    {
-        in.frictionLaw = FrictionLaw::Voellmy;
-        in.voellmy.mu = 0.2;
-        in.voellmy.xi = 2000;
-    }
-    const int nx = 200, ny = 30;
-    Problem<double> pb(makeParams<double>(in), nx, ny, 0, 2000, -150, 150);
-    pb.bc.type[xMin] = BCType::wall;
-    pb.setInclination(chuteZeta);
-    pb.setTopography([](double x, double y)
-    {
-        return 0.002*y*y + 0.01*std::sin(2*pi*x/35)*std::cos(2*pi*y/27);
-    });
-    pb.setState([](double x, double y)
-    {
-        const double r2 = ((x - 100)*(x - 100) + y*y)/(40*40);
-        return Primitive{r2 < 1 ? 3*(1 - r2) : 0, 0, 0};
-    });
+    const ModelInput in = chuteInput(voellmy);
+    const int nx = chuteNx, ny = chuteNy;
+    const Problem<double> pb = chuteProblem(in);
     const std::string name = voellmy
         ? "1b. chute, Voellmy mu = 0.2, xi = 2000" : "1a. chute, Coulomb delta = 19 deg";
     std::printf("\n%s\n  %6s %7s %9s %10s %12s %10s %14s\n", name.c_str(), "t", "steps",
         "dt", "max|v|", "at h", "moving", "moving volume");
     CpuSolver<double> s(pb, false);
-    const double tEnd = voellmy ? 300 : 150;
     std::vector<double> h, hu, hv;
-    for (double t = 30; t <= tEnd + 1e-9; t += 30)
+    advanceChute(s, voellmy, [&](double t)
     {
-        s.advanceTo(t);
         s.getState(h, hu, hv);
         double vmax = 0, hAt = 0, movingVolume = 0;
         long moving = 0;
@@ -175,43 +101,17 @@ void chute(Counter& test, bool voellmy)
         }
         std::printf("  %6.0f %7ld %9.4f %10.3f %12.3e %10ld %14.3f\n", t, s.steps(),
             s.lastDt(), vmax, hAt, moving, movingVolume);
-    }
+    });
     if (!voellmy)
     {
-        long moving = 0;
-        for (int c = 0; c < nx*ny; ++c)
-        {
-            moving += hu[c] != 0 || hv[c] != 0;
-        }
-        test.check(moving == 0, name + ": at rest by t = 150 s, every momentum exactly zero");
+        test.check(movingCells(hu, hv) == 0,
+            name + ": at rest by t = 150 s, every momentum exactly zero");
     }
     else
     {
         // The terminal speed of the thickest cell of each stencil
-        double worst = 0;
         int at = -1;
-        for (int j = 0; j < ny; ++j)
-        {
-            for (int i = 0; i < nx; ++i)
-            {
-                const int c = i + nx*j;
-                if (!(h[c] > 1e-4))
-                {
-                    continue;
-                }
-                double hs = h[c];
-                if (i > 0) { hs = std::max(hs, h[c - 1]); }
-                if (i < nx - 1) { hs = std::max(hs, h[c + 1]); }
-                if (j > 0) { hs = std::max(hs, h[c - nx]); }
-                if (j < ny - 1) { hs = std::max(hs, h[c + nx]); }
-                const double z = chuteZeta((i + 0.5)*10);
-                const double drive = std::max(0.0, std::sin(z) - 0.2*std::cos(z));
-                const double terminal = std::sqrt(in.voellmy.xi*hs*drive);
-                const double ratio =
-                    std::hypot(hu[c], hv[c])/h[c]/(1.5*terminal + 0.1);
-                if (ratio > worst) { worst = ratio; at = c; }
-            }
-        }
+        const double worst = terminalExcess(in, h, hu, hv, at);
         std::printf("  the largest speed over 1.5 times the terminal speed plus 0.1 m/s: "
                     "%.3f (cell %d, %d)\n", worst, at % nx, at/nx);
         test.check(worst <= 1, name + ": no cell with h > 1e-4 m faster than 1.5 times "
@@ -221,71 +121,34 @@ void chute(Counter& test, bool voellmy)
     // is no larger than the largest a cell of the body (h >= 5 % of the
     // peak) can have, (|u| + 2 sqrt(g K_max h))/dx + (|v| + ...)/dy
     {
-        const Params<double> p = makeParams<double>(in);
-        const double kMax = std::max(p.K.kxMax, p.K.kyMax);
-        double hPeak = 0, bodyRate = 0;
-        for (int c = 0; c < nx*ny; ++c)
-        {
-            hPeak = std::max(hPeak, h[c]);
-        }
-        for (int c = 0; c < nx*ny; ++c)
-        {
-            if (h[c] >= 0.05*hPeak)
-            {
-                const double c2 = 2*std::sqrt(in.g*kMax*h[c]);
-                bodyRate = std::max(bodyRate,
-                    (std::fabs(hu[c])/h[c] + c2)/10 + (std::fabs(hv[c])/h[c] + c2)/10);
-            }
-        }
+        const double body = bodyRate(in, h, hu, hv);
         const double rate = s.diagnostics().maxRate;
         std::printf("  CFL rate at the end %.4g 1/s, the body's largest possible %.4g 1/s\n",
-            rate, bodyRate);
-        test.check(rate <= bodyRate,
+            rate, body);
+        test.check(rate <= body,
             name + ": the time step at the end is the body's, not set by thin cells");
     }
-    // From the release's top (x = 60 m) to the end; the bumps' and the
-    // channel's relief (22.5 m at its rim) on top
-    checkMaps(test, name, peakSpeeds(s), in.g, drop(chuteZeta, 60, 2000) + 22.5,
-        makeParams<double>(in).K.kxMax*3);
+    checkMaps(test, name, peakSpeeds(s), in.g, chuteDrop(), chuteHead(in));
 }
 
 void inclinedPlane(Counter& test)
 {
-    ModelInput in;
-    in.g = 1;
-    in.phiDeg = 30;
-    in.coulomb.deltaDeg = 30;
-    const int nx = 120, ny = 56;
-    Problem<double> pb(makeParams<double>(in), nx, ny, 0, 30, -7, 7);
-    pb.setInclination(planeZeta);
-    pb.setState([](double x, double y)
-    {
-        const double r2 = (x - 4)*(x - 4) + y*y;
-        return Primitive{r2 < 1.85*1.85 ? std::sqrt(1.85*1.85 - r2) : 0, 0, 0};
-    });
+    const ModelInput in = filmPlaneInput();
+    const Problem<double> pb = filmPlaneProblem(in);
     const std::string name = "2. section 5.3, the cap into the flat runout, 120 x 56";
     std::printf("\n%s\n", name.c_str());
     CpuSolver<double> s(pb, false);
-    s.advanceTo(60);
+    s.advanceTo(filmPlaneEnd);
     std::vector<double> h, hu, hv;
     s.getState(h, hu, hv);
-    double vmax = 0;
-    long moving = 0;
-    for (std::size_t c = 0; c < h.size(); ++c)
-    {
-        moving += hu[c] != 0 || hv[c] != 0;
-        if (h[c] > 1e-4)
-        {
-            vmax = std::max(vmax, std::hypot(hu[c], hv[c])/h[c]);
-        }
-    }
+    const double vmax = maxSpeed(h, hu, hv);
+    const long moving = movingCells(hu, hv);
     const Speeds u = peakSpeeds(s);
     std::printf("  t = 60 after %ld steps: %ld cells moving, the fastest with h > 1e-4 "
                 "at %.4f (peak body speed %.3f)\n", s.steps(), moving, vmax, u.body);
     test.check(vmax <= 0.1*u.body,
         name + ": at t = 60 no cell with h > 1e-4 faster than a tenth of the flow's peak speed");
-    checkMaps(test, name, u, in.g, drop(planeZeta, 4 - 1.85, 30),
-        makeParams<double>(in).K.kxMax*1.85);
+    checkMaps(test, name, u, in.g, filmPlaneDrop(), filmPlaneHead(in));
 }
 
 } // namespace
