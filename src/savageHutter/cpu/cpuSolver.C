@@ -36,6 +36,7 @@ CpuSolver<Real>::CpuSolver
     geometry_(checkedSubdomain(pb, halo), halo),
     parallel_(parallel),
     peaks_(pb, &geometry_),
+    cover_(pb),
     halo_(halo)
 {
     this->time_ = pb.startTime;
@@ -44,6 +45,7 @@ CpuSolver<Real>::CpuSolver
     model_.bc = pb.bc;
     model_.geo = geometry_.view();
     model_.plan = geometry_.planView();
+    model_.cover = cover_.view();
 
     const Grid<Real>& g = pb.grid;
     if (halo_)
@@ -245,13 +247,16 @@ void CpuSolver<Real>::computeFluxes()
 template<class Real>
 void CpuSolver<Real>::advanceStep(Real dt, double tNew)
 {
+    const bool entraining = cover_.entraining();
     if (model_.p.planTerrain)
     {
-        stepWith<PlanStages>(dt, tNew);
+        if (entraining) { stepWith<Entraining<PlanStages>>(dt, tNew); }
+        else { stepWith<PlanStages>(dt, tNew); }
     }
     else
     {
-        stepWith<SlopeStages>(dt, tNew);
+        if (entraining) { stepWith<Entraining<SlopeStages>>(dt, tNew); }
+        else { stepWith<SlopeStages>(dt, tNew); }
     }
 }
 
@@ -349,6 +354,24 @@ void CpuSolver<Real>::getState
 
 
 template<class Real>
+void CpuSolver<Real>::getCover
+(
+    std::vector<Real>& hEntrainable,
+    std::vector<Real>& erodedDepth
+)
+{
+    if (!cover_.entraining())
+    {
+        hEntrainable.clear();
+        erodedDepth.clear();
+        return;
+    }
+    toInterior(model_.g, cover_.layer.data(), hEntrainable);
+    toInterior(model_.g, cover_.eroded.data(), erodedDepth);
+}
+
+
+template<class Real>
 PeakMaps<Real> CpuSolver<Real>::peakMaps()
 {
     PeakMaps<Real> maps;
@@ -373,15 +396,13 @@ Diagnostics CpuSolver<Real>::diagnostics()
 {
     // The wave rate of a cell looks at its neighbours
     fillStateGhosts();
-    if (!halo_)
-    {
-        Diagnostics d = diagnosticsOf(model_, U_.view());
-        d.speedClips = speedClips_;
-        return d;
-    }
     Diagnostics d = diagnosticsOf(model_, U_.view());
     d.speedClips = speedClips_;
-    return reducedDiagnostics(*halo_, d);
+    HostCover<Real>::addVolumes
+    (
+        model_.g, model_.cover.layer, model_.cover.eroded, d
+    );
+    return halo_ ? reducedDiagnostics(*halo_, d) : d;
 }
 
 

@@ -41,6 +41,24 @@ void checkEnsemble(const std::vector<Problem<Real>>& members)
             " run serial)"
         );
     }
+    for (std::size_t k = 0; k < members.size(); ++k)
+    {
+        const Problem<Real>& m = members[k];
+        if
+        (
+            m.params.entrainment.on() || !m.hEntrainable.empty()
+         || !m.erodedDepth.empty() || !m.cResistance.empty()
+        )
+        {
+            throw InputError
+            (
+                "entrainmentModel",
+                "member " + std::to_string(k) + ": ensembles do not run"
+                " the bed's cover yet (an entrainment model, hEntrainable,"
+                " cResistance); run the variants as single cases"
+            );
+        }
+    }
     for (std::size_t k = 1; k < members.size(); ++k)
     {
         const Problem<Real>& m = members[k];

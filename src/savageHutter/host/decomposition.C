@@ -70,7 +70,8 @@ Problem<Real> subProblem(const Problem<Real>& whole, const Subdomain& s)
         {
             throw std::invalid_argument
             (
-                "subProblem: a hazard map of the whole problem has "
+                "subProblem: a map of the whole problem (hazard map or bed"
+                " cover) has "
                 + std::to_string(w.size()) + " cells, the grid "
                 + std::to_string(std::size_t(G.nx)*G.ny)
             );
@@ -81,6 +82,9 @@ Problem<Real> subProblem(const Problem<Real>& whole, const Subdomain& s)
     cutIfGiven(whole.peaks.speed, p.peaks.speed);
     cutIfGiven(whole.peaks.pressure, p.peaks.pressure);
     cutIfGiven(whole.peaks.arrival, p.peaks.arrival);
+    cutIfGiven(whole.hEntrainable, p.hEntrainable);
+    cutIfGiven(whole.erodedDepth, p.erodedDepth);
+    cutIfGiven(whole.cResistance, p.cResistance);
 
     // The jet's first test in local indices (an empty range where its
     // cells lie elsewhere is harmless: the circle test decides)

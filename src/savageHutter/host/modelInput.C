@@ -160,6 +160,42 @@ void checkFrictionLaw(const ModelInput& in)
     );
 }
 
+//- Calls f(Model()) for the selected entrainment model
+template<class F>
+void withEntrainmentModel(EntrainmentModel selected, F&& f)
+{
+    forEachEntrainmentModel
+    (
+        [&](auto model)
+        {
+            if (entrainmentModelOf(model) == selected)
+            {
+                f(model);
+            }
+        }
+    );
+}
+
+//- The coefficients of the selected entrainment model: each within its
+//  bound, then the model's rules
+void checkEntrainmentModel(const ModelInput& in)
+{
+    withEntrainmentModel
+    (
+        in.entrainmentModel,
+        [&](auto model)
+        {
+            using M = decltype(model);
+            const typename M::Input& mi = in.of(model);
+            for (const auto& c : M::coefficients)
+            {
+                requireBound(c.keyword, mi.*c.value, c.bound, c.what);
+            }
+            M::validate(mi);
+        }
+    );
+}
+
 //- The basal friction angle of the selected law for earthPressure
 //  activePassive: its keyword and value [deg], or why there is none
 struct BasalFrictionAngle
@@ -247,6 +283,37 @@ const std::vector<std::string>& frictionLawNames()
     return n;
 }
 
+const std::vector<std::string>& entrainmentModelNames()
+{
+    static const std::vector<std::string> n = []()
+    {
+        std::vector<std::string> names;
+        forEachEntrainmentModel
+        (
+            [&](auto model) { names.push_back(decltype(model)::name); }
+        );
+        return names;
+    }();
+    return n;
+}
+
+EntrainmentModel parseEntrainmentModel
+(
+    const std::string& name,
+    const std::string& keyword
+)
+{
+    return parseName<EntrainmentModel>
+    (
+        entrainmentModelNames(), name, keyword, "entrainment model"
+    );
+}
+
+std::string toString(EntrainmentModel x)
+{
+    return entrainmentModelNames().at(int(x));
+}
+
 const std::vector<std::string>& coordinatesNames()
 {
     static const std::vector<std::string> n{"slope", "plan"};
@@ -310,6 +377,16 @@ void requireFiniteInput(const ModelInput& in)
             }
         }
     );
+    forEachEntrainmentModel
+    (
+        [&](auto model)
+        {
+            for (const auto& c : decltype(model)::coefficients)
+            {
+                requireFinite(c.keyword, in.of(model).*c.value);
+            }
+        }
+    );
     requireFinite("hDry", in.hDry);
     requireFinite("maxCo", in.cfl);
     requireFinite("arrivalThreshold", in.arrivalThreshold);
@@ -341,6 +418,7 @@ void checkModel(const ModelInput& in)
         );
     }
     checkFrictionLaw(in);
+    checkEntrainmentModel(in);
 }
 
 //- The basal friction angle [deg] of the active/passive coefficients: the
@@ -486,6 +564,17 @@ Params<Real> makeParams(const ModelInput& in)
     p.arrivalThreshold = Real(in.arrivalThreshold);
     p.rho = Real(in.rho);
     p.planTerrain = in.coordinates == Coordinates::plan;
+    p.entrainment = EntrainmentParams<Real>();
+    p.entrainment.model = in.entrainmentModel;
+    const EntrainmentContext ec{in.g, in.epsilon};
+    forEachEntrainmentModel
+    (
+        [&](auto model)
+        {
+            p.entrainment.of(model) =
+                decltype(model)::template params<Real>(in.of(model), ec);
+        }
+    );
     return p;
 }
 
@@ -565,6 +654,71 @@ std::string describeFrictionLaws()
                     << (e.accepted ? "accepted" : "rejected") << " "
                     << (e.activePassive ? "activePassive" : "isotropic")
                     << "\n";
+            }
+        }
+    );
+    return os.str();
+}
+
+
+std::string entrainmentCoeffsExample(EntrainmentModel selected)
+{
+    std::string s = "{";
+    withEntrainmentModel
+    (
+        selected,
+        [&](auto model)
+        {
+            using M = decltype(model);
+            const typename M::Input defaults{};
+            for (const auto& c : M::coefficients)
+            {
+                if (c.required)
+                {
+                    s += std::string(" ") + c.keyword + " "
+                       + exactString(defaults.*c.value) + ";";
+                }
+            }
+        }
+    );
+    return s + " }";
+}
+
+
+std::string describeEntrainmentModels()
+{
+    std::ostringstream os;
+    os  << "Entrainment models: entrainmentModel <name> and <name>Coeffs"
+        << " { ... } in\nconstant/transportProperties (none: off); the"
+        << " erodible layer is the\nfield 0/hEntrainable [m], the"
+        << " resistance 0/cResistance [1/m]; the\nmodel's header is"
+        << " src/savageHutter/physics/entrainmentModels/<name>.H.\n"
+        << "Per model: its coefficients (keyword, default, required or"
+        << " optional,\nunit, bound, what it is) and its edge cases.\n";
+    forEachEntrainmentModel
+    (
+        [&](auto model)
+        {
+            using M = decltype(model);
+            const typename M::Input defaults{};
+            os  << "\nentrainmentModel " << M::name << "\n"
+                << "    " << M::description << "\n";
+            for (const auto& c : M::coefficients)
+            {
+                os  << "    coefficient " << std::left
+                    << std::setw(8) << c.keyword << " "
+                    << std::setw(8) << exactString(defaults.*c.value) << " "
+                    << std::setw(8) << (c.required ? "required" : "optional")
+                    << " " << std::setw(5) << (*c.unit ? c.unit : "-")
+                    << " " << std::setw(7) << boundText(c.bound)
+                    << " " << c.what << "\n";
+            }
+            for (const EntrainmentEdgeCase& e : M::edgeCases)
+            {
+                os  << "    edge " << std::left << std::setw(12) << e.name
+                    << " " << std::setw(8) << e.keyword << " "
+                    << std::setw(8) << exactString(e.value) << " "
+                    << (e.accepted ? "accepted" : "rejected") << "\n";
             }
         }
     );

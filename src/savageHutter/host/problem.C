@@ -855,6 +855,104 @@ void HostPeaks<Real>::maps
 }
 
 
+// * * * * * * * * * * * * * * * * HostCover * * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- A cover array of the problem on the padded grid (zero in the ghost
+//  cells and everywhere where the problem gives none); InputError
+//  (keyword) on a wrong size or a value negative or beyond 1e30
+template<class Real>
+void padCover
+(
+    const Problem<Real>& pb,
+    const std::vector<Real>& in,
+    const char* keyword,
+    std::vector<Real>& out
+)
+{
+    const Grid<Real>& g = pb.grid;
+    out.assign(g.size(), Real(0));
+    if (in.empty())
+    {
+        return;
+    }
+    if (in.size() != std::size_t(pb.nCells()))
+    {
+        throw InputError
+        (
+            keyword,
+            "has " + std::to_string(in.size()) + " values for "
+          + std::to_string(pb.nCells()) + " cells"
+        );
+    }
+    for (int j = 0; j < g.ny; ++j)
+    {
+        for (int i = 0; i < g.nx; ++i)
+        {
+            const Real v = in[pb.cell(i, j)];
+            if (!(v >= Real(0) && v <= Real(1e30)))
+            {
+                throw InputError
+                (
+                    keyword,
+                    "must be >= 0 and at most 1e30, got "
+                  + numberString(double(v)) + " in cell ("
+                  + std::to_string(g.i0 + i) + ", "
+                  + std::to_string(g.j0 + j) + ")"
+                );
+            }
+            out[g.idx(i, j)] = v;
+        }
+    }
+}
+
+} // namespace
+
+
+template<class Real>
+HostCover<Real>::HostCover(const Problem<Real>& pb)
+{
+    std::vector<Real> l, e;
+    padCover(pb, pb.hEntrainable, "hEntrainable", l);
+    padCover(pb, pb.erodedDepth, "erodedDepth", e);
+    if (pb.params.entrainment.on())
+    {
+        layer.swap(l);
+        eroded.swap(e);
+    }
+    if (!pb.cResistance.empty())
+    {
+        padCover(pb, pb.cResistance, "cResistance", cResistance);
+    }
+}
+
+
+template<class Real>
+void HostCover<Real>::addVolumes
+(
+    const Grid<Real>& g,
+    const Real* layer,
+    const Real* eroded,
+    Diagnostics& d
+)
+{
+    double sl = 0, se = 0;
+    for (int j = 0; j < g.ny; ++j)
+    {
+        for (int i = 0; i < g.nx; ++i)
+        {
+            const int c = g.idx(i, j);
+            sl += layer ? double(layer[c]) : 0.0;
+            se += eroded ? double(eroded[c]) : 0.0;
+        }
+    }
+    d.layerVolume = sl*double(g.dx)*double(g.dy);
+    d.erodedVolume = se*double(g.dx)*double(g.dy);
+}
+
+
 template struct Problem<double>;
 template struct Problem<float>;
 template<class Real>
@@ -875,6 +973,8 @@ template struct HostGeometry<double>;
 template struct HostGeometry<float>;
 template struct HostPeaks<double>;
 template struct HostPeaks<float>;
+template struct HostCover<double>;
+template struct HostCover<float>;
 template bool squaredSpeedPeak(double, double, double, bool, double&);
 template bool squaredSpeedPeak(float, float, float, bool, float&);
 

@@ -1,0 +1,340 @@
+/*---------------------------------------------------------------------------*\
+  savageHutterFoam: Savage-Hutter granular avalanche solver
+
+Description
+    The bed's cover (physics/entrainment.H) against exact solutions and
+    conservation, CPU backend, double:
+
+    1. A uniform layer sliding on a plane (zeta 30 deg, Coulomb delta 20
+       deg, open sides: it stays uniform) entraining at constantRate r:
+       h = h0 + r t, h u = h0 u0 + S (h0 t + r t^2/2), S = g (sin zeta -
+       tan delta cos zeta).  The scheme takes the layer up after the
+       corrector whose source used h^n, so its momentum is the left sum
+       h0 u0 + S sum h^n dt: below the exact one by S r sum dt^2/2, at most
+       S r t dtMax/2 (first order in the coupling; asserted with that
+       bound, the measured error printed).
+    2. The volume balance in a closed box (walls), a cap released on the
+       plane over an erodible layer of 0.2 m with a gap: sum (h + layer)
+       dA conserved to round-off (relative 1e-13), layer >= 0, h >= 0,
+       erodedVolume = the layer's loss; in slope coordinates and on the
+       plan grid (a tilted DEM, H = J h per plan area).
+    3. Resistance only (cResistance c, Coulomb delta 20 deg): the uniform
+       layer from rest reaches the terminal speed u_t = sqrt(S/c) of
+       du/dt = S - c u^2, u = u_t tanh(sqrt(S c) t); at t = 120 s equal to
+       u_t to 1e-12 relative (the implicit drag's fixed point is the
+       model's), at t = 5 s within 1e-3 of the tanh.
+    4. Nothing changes without a model and resistance: a run given a
+       layer with entrainmentModel none, and one given cResistance 0
+       everywhere, write h, hu, hv bit for bit those of the plain run.
+    5. Bad input refused: a negative layer or resistance (InputError
+       naming hEntrainable / cResistance), every model's edge cases
+       (accepted or refused, naming the keyword), each model's worked
+       examples.
+\*---------------------------------------------------------------------------*/
+
+#include "../common/testing.H"
+#include "physics/entrainment.H"
+
+#include <cstring>
+
+using namespace sh;
+using namespace shtest;
+
+namespace
+{
+
+constexpr double pi = 3.14159265358979323846;
+
+//- printf into a string, for the checks' lines
+template<class... A>
+std::string say(const char* f, A... a)
+{
+    char buf[512];
+    std::snprintf(buf, sizeof buf, f, a...);
+    return buf;
+}
+constexpr double deg = pi/180.0;
+
+ModelInput planeInput()
+{
+    ModelInput in;
+    in.g = 9.81;
+    in.phiDeg = 35;
+    in.frictionLaw = FrictionLaw::Coulomb;
+    in.coulomb.deltaDeg = 20;
+    in.cfl = 0.4;
+    return in;
+}
+
+double slopeAcceleration(const ModelInput& in, double zetaDeg)
+{
+    return in.g*(std::sin(zetaDeg*deg) - std::tan(in.coulomb.deltaDeg*deg)*std::cos(zetaDeg*deg));
+}
+
+//- A uniform layer h0, u0 on a plane of zeta, open sides, 8 x 8 cells of 1 m
+Problem<double> uniformLayer(const ModelInput& in, double zetaDeg, double h0, double u0)
+{
+    Problem<double> pb(makeParams<double>(in), 8, 8, 0, 8, 0, 8);
+    pb.setInclination([&](double) { return zetaDeg*deg; });
+    pb.setState([&](double, double) { return Primitive{h0, u0, 0}; });
+    return pb;
+}
+
+double mean(const std::vector<double>& a)
+{
+    double s = 0;
+    for (double x : a) { s += x; }
+    return s/double(a.size());
+}
+
+void constantRate(Counter& test)
+{
+    std::printf("\n1. uniform layer with constantRate, zeta 30, delta 20, h0 0.5 m, u0 2 m/s\n");
+    ModelInput in = planeInput();
+    in.entrainmentModel = EntrainmentModel::ConstantRate;
+    in.constantRate.rate = 0.02;
+    const double zeta = 30, h0 = 0.5, u0 = 2, r = in.constantRate.rate;
+    Problem<double> pb = uniformLayer(in, zeta, h0, u0);
+    pb.hEntrainable.assign(pb.nCells(), 10.0);
+    const double S = slopeAcceleration(in, zeta);
+    CpuSolver<double> s(pb, false);
+    std::printf("  %6s %6s %14s %14s %12s %14s %14s %12s %12s\n", "t", "steps", "h",
+        "h exact", "err h", "hu", "hu exact", "err hu", "bound");
+    double dtMax = 0;
+    bool hOk = true, huOk = true, uniform = true;
+    for (double t : {1.0, 2.0, 4.0})
+    {
+        // The CFL step shrinks as the layer speeds up and thickens: the
+        // largest is that of the interval's start
+        dtMax = std::max(dtMax, double(s.stableDt()));
+        s.advanceTo(t);
+        std::vector<double> h, hu, hv;
+        s.getState(h, hu, hv);
+        const double hm = mean(h), hum = mean(hu);
+        for (std::size_t c = 0; c < h.size(); ++c)
+        {
+            uniform = uniform && h[c] == h[0] && hu[c] == hu[0] && hv[c] == 0;
+        }
+        const double hEx = h0 + r*t;
+        const double huEx = h0*u0 + S*(h0*t + 0.5*r*t*t);
+        // The left sum's defect, S r sum dt^2/2 <= S r t dtMax/2
+        const double bound = 0.5*S*r*t*dtMax + 1e-12*huEx;
+        std::printf("  %6.1f %6ld %14.10f %14.10f %12.3e %14.10f %14.10f %12.3e %12.3e\n",
+            t, s.steps(), hm, hEx, hm - hEx, hum, huEx, hum - huEx, bound);
+        hOk = hOk && std::fabs(hm - hEx) <= 1e-12*hEx*double(s.steps());
+        huOk = huOk && hum <= huEx + 1e-12*huEx && huEx - hum <= bound;
+    }
+    test.check(uniform, "1. the layer stays uniform to the bit (h, hu equal in every cell, hv = 0)");
+    test.check(hOk, "1. h = h0 + r t to round-off (1e-12 relative per step)");
+    test.check(huOk, "1. h u below the exact h0 u0 + S (h0 t + r t^2/2) by at most S r t dtMax/2");
+    std::vector<double> layer, eroded;
+    s.getCover(layer, eroded);
+    test.check(std::fabs(mean(layer) - (10 - r*4.0)) <= 1e-10 && std::fabs(mean(eroded) - r*4.0) <= 1e-10,
+        say("1. the layer left %.12f m and the eroded depth %.12f m (expected %.12f, %.12f)",
+            mean(layer), mean(eroded), 10 - r*4.0, r*4.0));
+}
+
+struct Balance
+{
+    double v0, v1, layerMin, hMin, erodedVol, layerLoss;
+};
+
+Balance boxRun(bool plan)
+{
+    ModelInput in = planeInput();
+    in.entrainmentModel = EntrainmentModel::ConstantRate;
+    in.constantRate.rate = 0.05;
+    const double zeta = 30;
+    if (plan)
+    {
+        in.coordinates = Coordinates::plan;
+    }
+    Problem<double> pb(makeParams<double>(in), 40, 20, 0, 40, -10, 10);
+    for (int s = 0; s < 4; ++s) { pb.bc.type[s] = BCType::wall; }
+    const double tz = std::tan(zeta*deg);
+    if (plan)
+    {
+        pb.setTopography([&](double x, double) { return -tz*x; });
+    }
+    else
+    {
+        pb.setInclination([&](double) { return zeta*deg; });
+    }
+    // J = 1/cos(zeta) on the plan grid's tilted plane: H = J h
+    const double J = plan ? 1/std::cos(zeta*deg) : 1.0;
+    pb.setState([&](double x, double y)
+    {
+        const double r2 = ((x - 8)*(x - 8) + y*y)/16.0;
+        return Primitive{J*std::max(0.0, 1 - r2), 0, 0};
+    });
+    pb.hEntrainable.assign(pb.nCells(), 0.0);
+    for (int j = 0; j < 20; ++j)
+    {
+        for (int i = 0; i < 40; ++i)
+        {
+            // a layer downslope of the cap, with a gap of bare bed
+            const bool covered = i >= 12 && !(i >= 20 && i < 24);
+            pb.hEntrainable[pb.cell(i, j)] = covered ? J*0.2 : 0.0;
+        }
+    }
+    CpuSolver<double> s(pb, false);
+    const Diagnostics d0 = s.diagnostics();
+    s.advanceTo(6.0);
+    const Diagnostics d1 = s.diagnostics();
+    std::vector<double> h, hu, hv, layer, eroded;
+    s.getState(h, hu, hv);
+    s.getCover(layer, eroded);
+    Balance b{d0.volume + d0.layerVolume, d1.volume + d1.layerVolume,
+              *std::min_element(layer.begin(), layer.end()),
+              *std::min_element(h.begin(), h.end()),
+              d1.erodedVolume, d0.layerVolume - d1.layerVolume};
+    std::printf("  %-16s volume %.6f -> %.6f m^3, layer %.6f -> %.6f m^3, eroded %.6f m^3, steps %ld\n",
+        plan ? "plan grid" : "slope coordinates", d0.volume, d1.volume, d0.layerVolume,
+        d1.layerVolume, d1.erodedVolume, s.steps());
+    return b;
+}
+
+void volumeBalance(Counter& test)
+{
+    std::printf("\n2. closed box, a cap over an erodible layer of 0.2 m, constantRate 0.05 m/s, t = 0..6 s\n");
+    for (bool plan : {false, true})
+    {
+        const Balance b = boxRun(plan);
+        const std::string name = plan ? "2b. plan grid" : "2a. slope coordinates";
+        const double rel = std::fabs(b.v1 - b.v0)/b.v0;
+        test.check(rel <= 1e-13, name + say(": flowing + erodible volume conserved (relative change %.2e <= 1e-13)", rel));
+        test.check(b.layerMin >= 0 && b.hMin >= 0, name + ": layer and h never negative");
+        test.check(b.erodedVol > 0.1 && std::fabs(b.erodedVol - b.layerLoss) <= 1e-12*b.v0,
+            name + say(": material was entrained (%.4f m^3) and the eroded volume is the layer's loss", b.erodedVol));
+    }
+}
+
+void resistance(Counter& test)
+{
+    std::printf("\n3. resistance only, c = 0.01 1/m, zeta 30, delta 20, from rest\n");
+    const ModelInput in = planeInput();
+    const double zeta = 30, c = 0.01;
+    Problem<double> pb = uniformLayer(in, zeta, 1.0, 0.0);
+    pb.cResistance.assign(pb.nCells(), c);
+    const double S = slopeAcceleration(in, zeta);
+    const double ut = std::sqrt(S/c);
+    CpuSolver<double> s(pb, false);
+    std::vector<double> h, hu, hv;
+    s.advanceTo(5.0);
+    s.getState(h, hu, hv);
+    const double u5 = hu[0]/h[0], ex5 = ut*std::tanh(std::sqrt(S*c)*5.0);
+    s.advanceTo(120.0);
+    s.getState(h, hu, hv);
+    const double u120 = hu[0]/h[0];
+    std::printf("  t = 5 s: u %.10f, exact %.10f (rel %.2e); t = 120 s: u %.12f, u_t %.12f (rel %.2e)\n",
+        u5, ex5, std::fabs(u5 - ex5)/ex5, u120, ut, std::fabs(u120 - ut)/ut);
+    test.check(std::fabs(u5 - ex5) <= 1e-3*ex5, "3. u(5 s) within 1e-3 of u_t tanh(sqrt(S c) t)");
+    test.check(std::fabs(u120 - ut) <= 1e-12*ut, "3. the terminal speed sqrt(S/c) to 1e-12 relative");
+}
+
+std::vector<double> plainRun(const Problem<double>& pb)
+{
+    CpuSolver<double> s(pb, false);
+    s.advanceTo(3.0);
+    std::vector<double> h, hu, hv;
+    s.getState(h, hu, hv);
+    h.insert(h.end(), hu.begin(), hu.end());
+    h.insert(h.end(), hv.begin(), hv.end());
+    return h;
+}
+
+void unchanged(Counter& test)
+{
+    std::printf("\n4. without a model and with zero resistance nothing changes\n");
+    const ModelInput in = planeInput();
+    Problem<double> pb(makeParams<double>(in), 30, 16, 0, 30, -8, 8);
+    pb.setInclination([](double) { return 35*deg; });
+    pb.setState([](double x, double y)
+    {
+        return Primitive{std::max(0.0, 1 - ((x - 6)*(x - 6) + y*y)/9.0), 0, 0};
+    });
+    const std::vector<double> ref = plainRun(pb);
+    Problem<double> a = pb;
+    a.hEntrainable.assign(a.nCells(), 0.3);
+    Problem<double> b = pb;
+    b.cResistance.assign(b.nCells(), 0.0);
+    const std::vector<double> ra = plainRun(a), rb = plainRun(b);
+    test.check(ra.size() == ref.size() && std::memcmp(ra.data(), ref.data(), ref.size()*sizeof(double)) == 0,
+        "4. a layer with entrainmentModel none: h, hu, hv bit for bit the plain run's");
+    test.check(rb.size() == ref.size() && std::memcmp(rb.data(), ref.data(), ref.size()*sizeof(double)) == 0,
+        "4. cResistance 0 everywhere: bit for bit the plain run's");
+}
+
+template<class F>
+bool refused(F&& f, const std::string& keyword)
+{
+    try { f(); }
+    catch (const InputError& e) { return e.keyword() == keyword; }
+    return false;
+}
+
+void badInput(Counter& test)
+{
+    std::printf("\n5. bad input\n");
+    ModelInput in = planeInput();
+    in.entrainmentModel = EntrainmentModel::ConstantRate;
+    Problem<double> pb = uniformLayer(in, 30, 0.5, 1);
+    Problem<double> a = pb;
+    a.hEntrainable.assign(a.nCells(), 0.1);
+    a.hEntrainable[5] = -1e-3;
+    test.check(refused([&]() { CpuSolver<double> s(a, false); }, "hEntrainable"),
+        "5. a negative erodible thickness refused, naming hEntrainable");
+    Problem<double> b = pb;
+    b.cResistance.assign(b.nCells(), 0.01);
+    b.cResistance[3] = std::nan("");
+    test.check(refused([&]() { CpuSolver<double> s(b, false); }, "cResistance"),
+        "5. a NaN resistance refused, naming cResistance");
+    Problem<double> c = pb;
+    c.hEntrainable.assign(3, 0.1);
+    test.check(refused([&]() { CpuSolver<double> s(c, false); }, "hEntrainable"),
+        "5. a layer of the wrong size refused");
+    forEachEntrainmentModel([&](auto model)
+    {
+        using M = decltype(model);
+        for (const auto& e : M::edgeCases)
+        {
+            ModelInput mi = planeInput();
+            mi.entrainmentModel = entrainmentModelOf(model);
+            for (const auto& k : M::coefficients)
+            {
+                if (std::string(k.keyword) == e.keyword) { mi.of(model).*k.value = e.value; }
+            }
+            bool ok = true;
+            try { makeParams<double>(mi); }
+            catch (const InputError& err) { ok = false; test.check(!e.accepted && err.keyword() == e.keyword,
+                say("5. %s %s: ", M::name, e.name) + err.what()); }
+            if (ok) { test.check(e.accepted, say("5. %s %s %g accepted", M::name, e.name, e.value)); }
+        }
+        for (const auto& x : M::examples)
+        {
+            const Params<double> p = makeParams<double>([&]()
+            {
+                ModelInput mi = planeInput();
+                mi.entrainmentModel = entrainmentModelOf(model);
+                return mi;
+            }());
+            const EntrainmentState<double> st{x.h, x.speed, x.tauB, x.gn, x.cosTheta, x.eroded, x.dt};
+            const double d = entrainmentDepth(p.entrainment, st);
+            test.check(std::fabs(d - x.depth) <= 1e-12*std::max(1.0, std::fabs(x.depth)),
+                say("5. %s example (%s): depth %.6g, expected %.6g", M::name, x.what, d, x.depth));
+        }
+    });
+}
+
+} // namespace
+
+int main()
+{
+    Counter test;
+    constantRate(test);
+    volumeBalance(test);
+    resistance(test);
+    unchanged(test);
+    badInput(test);
+    return test.finish();
+}
