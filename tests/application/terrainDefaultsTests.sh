@@ -242,16 +242,19 @@ top = [("dem", "\"<file>.asc|.tif\"  vertical elevation [m]"),
        ("axis", "((X0 Y0) (X1 Y1))  axis mode, top to bottom"),
        ("halfWidth", "> 0 [m]  axis mode"),
        ("profileSmoothing", ">= 0 [m]  axis mode"),
-       ("release", "{ <name> { ... } ... }")]
+       ("release", "{ <name> { ... } ... }"),
+       ("entrainment", "{ <name> { ... } ... }  optional: 0/hEntrainable"),
+       ("resistance", "{ <name> { ... } ... }  optional: 0/cResistance")]
 entry = [("polygon", "((X Y) ...);"), ("file", "\"<.shp>\";"),
          ("raster", "\"<.asc|.tif>\";"), ("thickness", "> 0 [m] (not with raster);"),
-         ("thicknessDirection", "vertical | normal;")]
+         ("thicknessDirection", "vertical | normal;"),
+         ("cResistance", "> 0 [1/m] (not with raster);")]
 missing = [k for k, r in top
            if not re.search(r"(?m)^ +" + re.escape(k) + r" +" + re.escape(r), help)]
 missing += [k for k, r in entry
             if not re.search(r"(?m)(^ +|; +|, +)" + re.escape(k) + r" +" + re.escape(r), help)]
 ok = not missing and "etc/caseDicts/terrainDict" in help
-print(("PASS  " if ok else "FAIL  ") + "terrainToCase -help: each of the %d terrainDict and release "
+print(("PASS  " if ok else "FAIL  ") + "terrainToCase -help: each of the %d terrainDict, release and resistance "
       "keywords on its own line with its range, and the sample named%s"
       % (len(top) + len(entry), "; missing or without its range: " + " ".join(missing) if missing else ""))
 ')"

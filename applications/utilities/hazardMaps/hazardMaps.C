@@ -9,7 +9,8 @@ Description
     and georeference, and a report of volumes, runout and travel angles.
     Run in the case directory after savageHutterFoam; reads
     constant/terrainMapping and, at each chosen time (default the latest),
-    hMax, UMax, pMax, tArrival, h and zb as savageHutterFoam wrote them.
+    hMax, UMax, pMax, tArrival, h and zb (and erodedDepth and
+    hEntrainable where written) as savageHutterFoam wrote them.
     pMax is the solver's field (rho |u|^2 peaked every step; written when
     constant/transportProperties has rho); without it, rho UMax^2 from the
     rho of transportProperties (the same to round-off: the peak of |u|^2
@@ -30,10 +31,22 @@ Description
                         arrived (-1: h never exceeded arrivalThreshold);
                         a rotated DEM's as .tif alone (ESRI ASCII grids are
                         north-up)
+        erodedDepth, hEntrainable
+                        where that time has them (a run with entrainment,
+                        docs/design.md section 7): the thickness eroded so
+                        far, nodata where it is 0, and the erodible layer
+                        left, every cell of the mesh a value
         report.dat      lines "key value", each after its comment line
                         "# key [unit] meaning":
             releasedVolume  sum of h dA at the first time directory [m^3]
-            depositVolume   sum of h dA at that time [m^3]
+            entrainedVolume sum of erodedDepth dA at that time [m^3],
+                            where the run has an erodible layer
+                            (erodedDepth or hEntrainable at that time, or
+                            hEntrainable at the first): 0 without
+                            erodedDepth; no line without a layer
+            depositVolume   sum of h dA at that time [m^3] (all the
+                            material in the domain, moving or at rest:
+                            the final flowing volume at the last time)
             runoutX/Y/Z     world position of the bed in the cell furthest
                             along the axis with hMax > threshold (of that
                             row of cells, the one with the largest hMax)
@@ -41,7 +54,8 @@ Description
                             highest released point to the runout point
             comTravelAngle  [deg] the same between the centres of mass of
                             the release and of the material at that time
-            outflowVolume   releasedVolume - depositVolume [m^3]
+            outflowVolume   releasedVolume + entrainedVolume -
+                            depositVolume [m^3]
             reachesBoundary 1 if a cell of the mesh's outermost ring has
                             hMax > threshold (the flow reached the domain's
                             edge; the log warns), else 0
@@ -57,7 +71,7 @@ Description
     DEM's coordinate reference system (a grid rotated against north as .tif
     alone); hMax and deposit are the thickness h normal to the bed.  The
     report (planReport.H) holds the keys above, the volumes sums of J h A
-    (J = sqrt(1 + |grad zb|^2)), the runout point the footprint's cell
+    (J = sqrt(1 + |grad zb|^2); entrainedVolume of J erodedDepth A), the runout point the footprint's cell
     horizontally furthest from the highest released point, comTravelAngle
     measured along the centre of mass' path, and adds comPathLength.  A
     mapping of another mode, or a plan mapping without coordinates plan,

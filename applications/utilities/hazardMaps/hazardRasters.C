@@ -189,7 +189,13 @@ hazardFields::hazardFields
     hMax(fieldIO(mesh, now, "hMax"), mesh),
     UMax(fieldIO(mesh, now, "UMax"), mesh),
     h(fieldIO(mesh, now, "h"), mesh),
-    zb(fieldIO(mesh, hasField(mesh, now, "zb") ? now : first, "zb"), mesh)
+    zb(fieldIO(mesh, hasField(mesh, now, "zb") ? now : first, "zb"), mesh),
+    erodible
+    (
+        hasField(mesh, now, "erodedDepth")
+     || hasField(mesh, now, "hEntrainable")
+     || hasField(mesh, first, "hEntrainable")
+    )
 {
     maps.insert("hMax", hMax.primitiveField());
     maps.insert("UMax", UMax.primitiveField());
@@ -221,6 +227,23 @@ hazardFields::hazardFields
             )
           + " and no field pMax in " + now
           + " (add rho [kg/m^3] to have pMax = rho UMax^2)"
+        );
+    }
+    // The erodible layer's maps, where the run had one (section 7)
+    if (hasField(mesh, now, "erodedDepth"))
+    {
+        erodedDepth =
+            volScalarField(fieldIO(mesh, now, "erodedDepth"), mesh)
+                .primitiveField();
+        maps.insert("erodedDepth", erodedDepth);
+    }
+    if (hasField(mesh, now, "hEntrainable"))
+    {
+        maps.insert
+        (
+            "hEntrainable",
+            volScalarField(fieldIO(mesh, now, "hEntrainable"), mesh)
+                .primitiveField()
         );
     }
     if (hasField(mesh, now, "tArrival"))
@@ -256,9 +279,13 @@ void writeMaps
     {
         const scalarField& f = fields.maps[name];
         // -1 in tArrival: never arrived; the deposit masked by itself
-        // (h > threshold at that time), the others by hMax
+        // (h > threshold at that time), the eroded depth too (where
+        // anything was eroded: its volume is in the report whatever hMax
+        // was there), the layer left not at all, the others by hMax
         const bool arrival = name == "tArrival";
         const bool deposit = name == "deposit";
+        const bool eroded = name == "erodedDepth";
+        const bool layer = name == "hEntrainable";
         writeMap
         (
             outDir/name, grid, pixelCell, f,
@@ -267,6 +294,14 @@ void writeMaps
                 if (deposit)
                 {
                     return f[c] > threshold;
+                }
+                if (eroded)
+                {
+                    return f[c] > 0;
+                }
+                if (layer)
+                {
+                    return true;
                 }
                 return hMax[c] > threshold && !(arrival && f[c] < 0);
             }

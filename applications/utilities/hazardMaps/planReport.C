@@ -283,6 +283,12 @@ void writePlanReport
     const scalarField J = bedMetric(h0.mesh(), mapping, fields.zb);
     const scalar released = centreOf(mapping, J, h0, fields.zb).volume;
     const scalar deposit = centreOf(mapping, J, fields.h, fields.zb).volume;
+    scalar entrained = 0;
+    forAll(fields.erodedDepth, c)
+    {
+        entrained += J[c]*fields.erodedDepth[c]*mapping.cellSize
+            *mapping.cellSize;
+    }
     const planRunout r = runoutOf(threshold, mapping, h0, fields);
     const comPath path = comPathOf(mapping, times, now, J, fields.zb);
     const scalar s = pathLength(path.points);
@@ -302,9 +308,11 @@ void writePlanReport
         << " J = sqrt(1 + |grad zb|^2)" << nl
         << "# lines 'key value'; each key's unit and meaning on the"
         << " comment line above it" << nl;
-    const scalar outflow = outflowVolume(released, deposit);
+    const scalar outflow = outflowVolume(released, entrained, deposit);
     writeVolumeKey(report, "releasedVolume", "m^3",
         "sum of J h A at the first time directory", released);
+    reportEntrained(report, "sum of J erodedDepth A at that time (0"
+        " without the field erodedDepth)", fields, now.name(), entrained);
     writeVolumeKey(report, "depositVolume", "m^3",
         "sum of J h A at that time (in the domain)", deposit);
     writeKey(report, "runoutX", "m", "world X of the runout point (the bed"
@@ -318,7 +326,10 @@ void writePlanReport
         " distance), highest released point to the runout point", alpha);
     writeKey(report, "comTravelAngle", "deg", "atan(dz / s) along the"
         " centre of mass' path", comAngle);
-    writeVolumeKey(report, "outflowVolume", "m^3", outflowWhat, outflow);
+    writeVolumeKey
+    (
+        report, "outflowVolume", "m^3", outflowWhat(fields), outflow
+    );
     writeKey(report, "comPathLength", "m", "s, the horizontal length of"
         " the centre of mass' path", s);
     writeKey(report, "reachesBoundary", "1", "1 if a cell of the grid's"

@@ -27,6 +27,7 @@ terrain::vec3 bedPoint
 struct runout
 {
     scalar released = 0;
+    scalar entrained = 0;
     scalar deposit = 0;
 
     //- The highest released point, the centres of mass of the release and
@@ -62,6 +63,10 @@ runout runoutOf
             r.com0[k] += h0[c]*W[k];
             r.com1[k] += h[c]*W[k];
         }
+    }
+    for (const scalar e : fields.erodedDepth)
+    {
+        r.entrained += e*cellArea;
     }
     for (int k = 0; k < 3; ++k)
     {
@@ -146,17 +151,54 @@ std::string volumeText(const scalar v)
 }
 
 
-scalar outflowVolume(const scalar released, const scalar deposit)
+scalar outflowVolume
+(
+    const scalar released, const scalar entrained, const scalar deposit
+)
 {
-    const scalar out = released - deposit;
-    return mag(out) < 1e-9*mag(released) ? 0 : out;
+    // The balance released + entrained = deposit + outflow
+    const scalar in = released + entrained;
+    const scalar out = in - deposit;
+    return mag(out) < 1e-9*mag(in) ? 0 : out;
 }
 
 
-const char* const outflowWhat =
-    "releasedVolume - depositVolume: what left the domain (0 where its"
-    " magnitude is below 1e-9 of releasedVolume, the round-off of the"
-    " two sums)";
+const char* outflowWhat(const hazardFields& fields)
+{
+    // A run without an erodible layer keeps the report it always had
+    return fields.erodible
+      ? "releasedVolume + entrainedVolume - depositVolume: what left the"
+        " domain (0 where its magnitude is below 1e-9 of releasedVolume +"
+        " entrainedVolume, the round-off of the sums)"
+      : "releasedVolume - depositVolume: what left the domain (0 where its"
+        " magnitude is below 1e-9 of releasedVolume, the round-off of the"
+        " two sums)";
+}
+
+
+void reportEntrained
+(
+    Ostream& report, const char* what, const hazardFields& fields,
+    const word& now, const scalar entrained
+)
+{
+    if (!fields.erodible)
+    {
+        return;
+    }
+    writeVolumeKey(report, "entrainedVolume", "m^3", what, entrained);
+    if (fields.erodedDepth.size())
+    {
+        Info<< "    Entrained volume " << volumeText(entrained).c_str()
+            << " m^3 (erodedDepth at time " << now << ")" << nl;
+    }
+    else
+    {
+        Info<< "    No field erodedDepth at time " << now << " (the run"
+            << " has an erodible layer, hEntrainable): entrainedVolume 0"
+            << nl;
+    }
+}
 
 
 void writeReport
@@ -180,9 +222,11 @@ void writeReport
         << threshold << " m on hMax; world coordinates of the DEM" << nl
         << "# lines 'key value'; each key's unit and meaning on the"
         << " comment line above it" << nl;
-    const scalar outflow = outflowVolume(r.released, r.deposit);
+    const scalar outflow = outflowVolume(r.released, r.entrained, r.deposit);
     writeVolumeKey(report, "releasedVolume", "m^3",
         "sum of h dA at the first time directory", r.released);
+    reportEntrained(report, "sum of erodedDepth dA at that time (0"
+        " without the field erodedDepth)", fields, now, r.entrained);
     writeVolumeKey(report, "depositVolume", "m^3",
         "sum of h dA at that time (in the domain)", r.deposit);
     writeKey(report, "runoutX", "m", "world X of the runout point (the"
@@ -197,7 +241,10 @@ void writeReport
     writeKey(report, "comTravelAngle", "deg", "the same between the"
         " centres of mass of the release and of the material at that time",
         comAlpha);
-    writeVolumeKey(report, "outflowVolume", "m^3", outflowWhat, outflow);
+    writeVolumeKey
+    (
+        report, "outflowVolume", "m^3", outflowWhat(fields), outflow
+    );
     writeKey(report, "reachesBoundary", "1", "1 if a cell of the mesh's"
         " outermost ring has hMax > threshold (the flow reached the"
         " domain's edge: the runout may be cut off), else 0",

@@ -17,6 +17,13 @@ Description
     conditions of existing fields are kept; a missing 0/zb is created with
     zeroGradient patches.
 
+    The erodible layer and the resistance areas (docs/design.md section
+    7) take the scalar shapes too: hEntrainable, the thickness [m] that
+    may be entrained (normal to the bed, as h), and cResistance, the
+    resistance coefficient [1/m] of the extra drag c_res |u|^2; both
+    must come out >= 0, and each, when listed, is created with
+    zeroGradient patches where the case has none.
+
     Shapes (centre, min, max, gradient, origin are (x y) pairs):
 
         hemisphere { centre (4 0); radius 1.85; }       sqrt(R^2 - r^2)
@@ -41,6 +48,8 @@ Description
 
         h  ( hemisphere { centre (4 0); radius 1.85; } );
         zb ( bowl { centre (0 0); slope 0.5; } );
+        hEntrainable ( box { min (8 -2); max (20 2); value 0.3; } );
+        cResistance  ( box { min (20 -2); max (25 2); value 0.01; } );
 
 Usage
     setAvalancheFields [-dict file]
@@ -349,8 +358,8 @@ void declareOptions()
 {
     argList::addNote
     (
-        "Set h, U and zb of a savageHutterFoam case from the shapes in"
-        " system/setAvalancheFieldsDict"
+        "Set h, U, zb, hEntrainable and cResistance of a savageHutterFoam"
+        " case from the shapes in system/setAvalancheFieldsDict"
     );
     argList::addOption("dict", "file", "alternative dictionary");
     argList::noParallel();
@@ -372,15 +381,44 @@ IOobject shapesDictIO(const argList& args, const Time& runTime)
     );
 }
 
-//- The dictionary has entries h, U and zb only
+const wordList validEntries({"h", "U", "zb", "hEntrainable", "cResistance"});
+
+//- The dictionary has the entries validEntries lists only
 void checkEntries(const dictionary& dict)
 {
     for (const word& key : dict.toc())
     {
-        if (!wordList({"h", "U", "zb"}).found(key))
+        if (!validEntries.found(key))
         {
             FatalIOErrorInFunction(dict)
-                << "Unknown entry '" << key << "'; valid entries: (h U zb)"
+                << "Unknown entry '" << key << "'; valid entries: "
+                << flatOutput(validEntries) << nl << exit(FatalIOError);
+        }
+    }
+}
+
+//- FatalIOError naming the field, the value and the cell where the shapes
+//  of f give a negative value (h, hEntrainable, cResistance)
+void checkNonNegative
+(
+    const dictionary& dict, const autoPtr<volScalarField>& f,
+    const volVectorField::Internal& C
+)
+{
+    if (!f.valid())
+    {
+        return;
+    }
+    const word& name = f().name();
+    forAll(f(), c)
+    {
+        if (f()[c] < 0)
+        {
+            FatalIOErrorInFunction(dict)
+                << "The shapes of " << name << " give " << name << " = "
+                << f()[c] << " < 0 in cell " << c << " at " << C[c]
+                << " (" << name << " must be >= 0); check their entries:"
+                << nl << dict.findEntry(name, keyType::LITERAL)->stream()
                 << nl << exit(FatalIOError);
         }
     }
@@ -398,17 +436,7 @@ autoPtr<volScalarField> thicknessField
     {
         h.reset(new volScalarField(fieldIO(mesh, "h"), mesh));
         setField(dict, "h", scalarShapes, h(), C);
-        forAll(h(), c)
-        {
-            if (h()[c] < 0)
-            {
-                FatalIOErrorInFunction(dict)
-                    << "The shapes of h give h = " << h()[c] << " < 0 in cell "
-                    << c << " at " << C[c] << "; check their entries:" << nl
-                    << dict.findEntry("h", keyType::LITERAL)->stream()
-                    << nl << exit(FatalIOError);
-            }
-        }
+        checkNonNegative(dict, h, C);
     }
     return h;
 }
@@ -429,63 +457,70 @@ autoPtr<volVectorField> velocityField
     return U;
 }
 
-//- zb of its shapes, created with zeroGradient patches where the case
-//  has none; none where dict has no zb
-autoPtr<volScalarField> bedField
+//- Scalar field `name` of its shapes (zb, hEntrainable, cResistance),
+//  created with zeroGradient patches and dimensions dims where the case
+//  has none; none where dict does not list it
+autoPtr<volScalarField> optionalField
 (
     const dictionary& dict, const fvMesh& mesh,
-    const volVectorField::Internal& C
+    const volVectorField::Internal& C, const word& name,
+    const dimensionSet& dims
 )
 {
-    autoPtr<volScalarField> zb;
-    if (dict.found("zb"))
+    autoPtr<volScalarField> f;
+    if (dict.found(name))
     {
-        IOobject io(fieldIO(mesh, "zb"));
+        IOobject io(fieldIO(mesh, name));
         if (io.typeHeaderOk<volScalarField>(true))
         {
-            zb.reset(new volScalarField(io, mesh));
+            f.reset(new volScalarField(io, mesh));
         }
         else
         {
             io.readOpt() = IOobject::NO_READ;
-            zb.reset
+            f.reset
             (
                 new volScalarField
                 (
-                    io, mesh, dimensionedScalar(dimLength, Zero),
-                    "zeroGradient"
+                    io, mesh, dimensionedScalar(dims, Zero), "zeroGradient"
                 )
             );
         }
-        setField(dict, "zb", scalarShapes, zb(), C);
+        setField(dict, name, scalarShapes, f(), C);
     }
-    return zb;
+    return f;
 }
 
-//- The fields set, with h's volume and zb's range
-void writeFields
+//- A thickness field's volume, the sum of f dA [m^3] (in plan coordinates
+//  the volume on the bed is the sum of J f dA: savageHutterFoam's log)
+scalar volumeOf(const fvMesh& mesh, const volScalarField& f)
+{
+    return gSum(f.primitiveField()*mesh.V()/(mesh.bounds().span().z()));
+}
+
+//- Write f where it was set, with what the log says of it
+void writeField
 (
-    const fvMesh& mesh, const autoPtr<volScalarField>& h,
-    const autoPtr<volVectorField>& U, const autoPtr<volScalarField>& zb
+    const autoPtr<volScalarField>& f, const fvMesh& mesh, bool thickness,
+    const char* unit
 )
 {
-    if (h.valid())
+    if (!f.valid())
     {
-        Info<< "Writing h: volume " << gSum(h().primitiveField()*mesh.V()/
-            (mesh.bounds().span().z())) << " m^3" << nl << endl;
-        h().write();
+        return;
     }
-    if (U.valid())
+    Info<< "Writing " << f().name();
+    if (thickness)
     {
-        Info<< "Writing U" << nl << endl;
-        U().write();
+        Info<< ": volume " << volumeOf(mesh, f()) << " m^3";
     }
-    if (zb.valid())
+    else
     {
-        Info<< "Writing zb: range [" << gMin(zb().primitiveField()) << ", "
-            << gMax(zb().primitiveField()) << "] m" << nl << endl;
-        zb().write();
+        Info<< ": range [" << gMin(f().primitiveField()) << ", "
+            << gMax(f().primitiveField()) << "] " << unit;
     }
+    Info<< nl << endl;
+    f().write();
 }
 
 } // namespace
@@ -507,8 +542,24 @@ int main(int argc, char *argv[])
     const volVectorField::Internal& C = mesh.C();
     const autoPtr<volScalarField> h = thicknessField(dict, mesh, C);
     const autoPtr<volVectorField> U = velocityField(dict, mesh, C);
-    const autoPtr<volScalarField> zb = bedField(dict, mesh, C);
-    writeFields(mesh, h, U, zb);
+    const autoPtr<volScalarField> zb =
+        optionalField(dict, mesh, C, "zb", dimLength);
+    const autoPtr<volScalarField> hEntrainable =
+        optionalField(dict, mesh, C, "hEntrainable", dimLength);
+    checkNonNegative(dict, hEntrainable, C);
+    const autoPtr<volScalarField> cResistance =
+        optionalField(dict, mesh, C, "cResistance", dimless/dimLength);
+    checkNonNegative(dict, cResistance, C);
+
+    writeField(h, mesh, true, "m");
+    if (U.valid())
+    {
+        Info<< "Writing U" << nl << endl;
+        U().write();
+    }
+    writeField(zb, mesh, false, "m");
+    writeField(hEntrainable, mesh, true, "m");
+    writeField(cResistance, mesh, false, "1/m");
 
     Info<< "End\n" << endl;
     return 0;

@@ -36,7 +36,7 @@ terrainFiles::mapping terrainMapping
 (
     const terrainDem& dem, const chuteAxis& axis,
     const thalwegProfile& profile, const chuteGrid& grid,
-    const releasedLayer& layer
+    const areaLayer& layer
 )
 {
     terrainFiles::mapping m;
@@ -55,6 +55,48 @@ terrainFiles::mapping terrainMapping
     return m;
 }
 
+
+//- The optional fields of the areas (docs/design.md section 7): written
+//  by `write` (path, name, dimensions, values) where terrainDict has the
+//  entry; where it has none, a file the case has is left as it is, with
+//  a warning (it was not made from this terrainDict); the names written
+//  appended to `wrote`
+template<class Writer>
+void writeAreaFields
+(
+    const fileName& path, const caseLayers& layers, const Writer& write,
+    std::string& wrote
+)
+{
+    const struct
+    {
+        const char* name;
+        const char* kind;
+        const char* dims;
+        const areaLayer& f;
+    } fields[] =
+    {
+        {"hEntrainable", "entrainment", "[0 1 0 0 0 0 0]", layers.hEntrainable},
+        {"cResistance", "resistance", "[0 -1 0 0 0 0 0]", layers.cResistance}
+    };
+    for (const auto& field : fields)
+    {
+        const fileName file = path/"0"/field.name;
+        if (field.f.values.size())
+        {
+            write(file, field.name, field.dims, field.f.values);
+            wrote += std::string(", 0/") + field.name;
+        }
+        else if (isFile(file))
+        {
+            WarningInFunction
+                << file << " is left as it is: terrainDict has no "
+                << field.kind << " entry to make it of (delete it if it"
+                << " belongs to an earlier mesh)" << nl << endl;
+        }
+    }
+}
+
 } // End anonymous namespace
 
 
@@ -62,7 +104,7 @@ void writeCaseFiles
 (
     const Time& runTime, const IOdictionary& dict, const terrainDem& dem,
     const chuteAxis& axis, const thalwegProfile& profile,
-    const chuteGrid& grid, const scalarField& zb, const releasedLayer& layer
+    const chuteGrid& grid, const scalarField& zb, const caseLayers& layers
 )
 {
     const fileName tpFile = runTime.path()/"constant"/"transportProperties";
@@ -88,26 +130,41 @@ void writeCaseFiles
     );
     terrainFiles::writeScalarField
     (
-        runTime.path()/"0"/"h", "h", "[0 1 0 0 0 0 0]", layer.h,
+        runTime.path()/"0"/"h", "h", "[0 1 0 0 0 0 0]", layers.h.values,
         "zeroGradient"
     );
     terrainFiles::writeVelocityField(runTime.path()/"0"/"U");
+    std::string areaFiles;
+    writeAreaFields
+    (
+        runTime.path(), layers,
+        [](const fileName& file, const char* name, const char* dims,
+            const scalarField& values)
+        {
+            terrainFiles::writeScalarField
+            (
+                file, name, dims, values, "zeroGradient"
+            );
+        },
+        areaFiles
+    );
     terrainFiles::writeMapping
     (
         runTime.path()/"constant"/"terrainMapping",
-        terrainMapping(dem, axis, profile, grid, layer)
+        terrainMapping(dem, axis, profile, grid, layers.h)
     );
     writeMissingCaseFiles(runTime.path());
 
     Info<< "Wrote system/blockMeshDict, constant/transportProperties"
-        << " (inclination), 0/zb, 0/h, 0/U, constant/terrainMapping" << nl
+        << " (inclination), 0/zb, 0/h, 0/U" << areaFiles.c_str()
+        << ", constant/terrainMapping" << nl
         << "Next: blockMesh, then savageHutterFoam" << nl << nl;
 }
 
 void writePlanCaseFiles
 (
     const Time& runTime, const IOdictionary& dict, const terrainDem& dem,
-    const planGrid& grid, const planBed& bed, const releasedLayer& layer
+    const planGrid& grid, const planBed& bed, const caseLayers& layers
 )
 {
     const fileName tpFile = runTime.path()/"constant"/"transportProperties";
@@ -139,12 +196,26 @@ void writePlanCaseFiles
     terrainFiles::writePlanField
     (
         runTime.path()/"0"/"h", "volScalarField", "h", "[0 1 0 0 0 0 0]",
-        layer.h
+        layers.h.values
     );
     terrainFiles::writePlanField
     (
         runTime.path()/"0"/"U", "volVectorField", "U", "[0 1 -1 0 0 0 0]",
         std::vector<double>(), "(0 0 0)"
+    );
+    std::string areaFiles;
+    writeAreaFields
+    (
+        runTime.path(), layers,
+        [](const fileName& file, const char* name, const char* dims,
+            const scalarField& values)
+        {
+            terrainFiles::writePlanField
+            (
+                file, "volScalarField", name, dims, values
+            );
+        },
+        areaFiles
     );
     terrainFiles::planMapping m;
     m.dem = dem.name;
@@ -154,7 +225,7 @@ void writePlanCaseFiles
     m.cellSize = grid.cellSize;
     m.nx = grid.nx;
     m.ny = grid.ny;
-    m.releasedVolume = layer.volume;
+    m.releasedVolume = layers.h.volume;
     terrainFiles::writePlanMapping
     (
         runTime.path()/"constant"/"terrainMapping", m
@@ -162,8 +233,8 @@ void writePlanCaseFiles
     writeMissingCaseFiles(runTime.path());
 
     Info<< "Wrote system/blockMeshDict, constant/transportProperties"
-        << " (coordinates plan), 0/zb, 0/h, 0/U, constant/terrainMapping"
-        << " (mode plan)" << nl
+        << " (coordinates plan), 0/zb, 0/h, 0/U" << areaFiles.c_str()
+        << ", constant/terrainMapping (mode plan)" << nl
         << "Next: blockMesh, then savageHutterFoam" << nl << nl;
 }
 

@@ -34,8 +34,8 @@ std::vector<terrain::point2> ringOnGrid
             const std::array<double, 2> A = g.world(0, 0);
             const std::array<double, 2> B = g.world(xMax, yMax);
             FatalIOErrorInFunction(*r.dict)
-                << "keyword '" << r.shapeKey << "' of release " << r.name
-                << ": the release outline passes (X = " << P[0] << ", Y = "
+                << "keyword '" << r.shapeKey << "' of " << r.kind << ' '
+                << r.name << ": the " << r.kind << " outline passes (X = " << P[0] << ", Y = "
                 << P[1] << ") (x = " << p[0] << ", y = " << p[1]
                 << ") outside the plan grid, x in [0, " << xMax
                 << "], y in [0, " << yMax << "] (corners X = " << A[0]
@@ -97,7 +97,7 @@ scalarField polygonThickness(const release& r, const planGrid& g)
     forAll(frac, c)
     {
         // Overlapping polygons of one release count once
-        d[c] = r.thickness*min(max(frac[c], scalar(0)), scalar(1));
+        d[c] = r.value*min(max(frac[c], scalar(0)), scalar(1));
     }
     return d;
 }
@@ -126,46 +126,57 @@ scalarField rasterThickness
 } // End anonymous namespace
 
 
-releasedLayer planReleaseThickness
+areaLayer planReleaseThickness
 (
     const std::vector<release>& releases, const terrainDem& dem,
     const planGrid& g, const planBed& bed
 )
 {
+    areaLayer layer;
+    if (releases.empty())
+    {
+        return layer;
+    }
     const scalar cellArea = g.cellSize*g.cellSize;
-    releasedLayer layer{scalarField(g.nCells(), Zero), 0};
+    layer.values.setSize(g.nCells(), Zero);
     for (const release& r : releases)
     {
-        // The thickness in each cell, normal or vertical as given
+        // The value in each cell, a thickness normal or vertical as given
         terrain::rasterRelease mapped;
         const scalarField d = r.shapeKey == "raster"
           ? rasterThickness(r, dem, g, mapped)
           : polygonThickness(r, g);
         scalar volume = 0;
+        scalarField values(d.size(), Zero);
         forAll(d, c)
         {
             if (d[c] > 0)
             {
                 const scalar cosTheta = bed.cosTheta[c];
-                const scalar hc = d[c]*(r.vertical ? cosTheta : 1);
-                layer.h[c] += hc;
-                volume += hc/cosTheta*cellArea;
+                values[c] = d[c]*(r.vertical ? cosTheta : 1);
+                volume += values[c]/cosTheta*cellArea;
             }
         }
         if (!(volume > 0))
         {
             FatalIOErrorInFunction(*r.dict)
-                << "keyword '" << r.shapeKey << "' of release " << r.name
-                << ": the release "
+                << "keyword '" << r.shapeKey << "' of " << r.kind << ' '
+                << r.name << ": the " << r.kind << ' '
                 << (r.shapeKey == "raster" ? r.rasterFile + " " : "")
                 << "covers no area of the plan grid" << nl
                 << exit(FatalIOError);
         }
-        reportRelease(r, mapped, volume);
+        reportRelease(r, mapped, volume, values);
+        layer.values += values;
         layer.volume += volume;
     }
-    Info<< "Released volume " << layer.volume << " m^3 (sum of h J A, J ="
-        << " 1/cos(theta) the surface area per plan area)" << nl << endl;
+    reportLayer(releases, layer);
+    if (releases.front().valueKey == "thickness")
+    {
+        Info<< " (sum of h J A, J = 1/cos(theta) the surface area per plan"
+            << " area)";
+    }
+    Info<< nl << endl;
     return layer;
 }
 

@@ -12,15 +12,15 @@ namespace Foam
 namespace
 {
 
-//- FatalIOError for keyword key of release name with GDAL's complaint
+//- FatalIOError for keyword key of area r with GDAL's complaint
 void releaseError
 (
-    const dictionary& d, const word& key, const word& name,
+    const dictionary& d, const word& key, const release& r,
     const terrain::gdalError& err
 )
 {
     FatalIOErrorInFunction(d)
-        << "keyword '" << key << "' of release " << name << ": "
+        << "keyword '" << key << "' of " << r.kind << ' ' << r.name << ": "
         << err.what() << nl << exit(FatalIOError);
 }
 
@@ -30,7 +30,7 @@ void releaseError
 std::unique_ptr<terrain::crsTransform> toDemSystem
 (
     const std::string& wkt, const std::string& demWkt, const fileName& file,
-    const dictionary& d, const word& key, const word& releaseName
+    const dictionary& d, const word& key, const release& a
 )
 {
     std::unique_ptr<terrain::crsTransform> t;
@@ -40,29 +40,29 @@ std::unique_ptr<terrain::crsTransform> toDemSystem
     }
     catch (const terrain::gdalError& err)
     {
-        releaseError(d, key, releaseName, err);
+        releaseError(d, key, a, err);
     }
     if (!t->warning().empty())
     {
         WarningInFunction
-            << "release " << releaseName << ": " << t->warning().c_str()
+            << a.kind << ' ' << a.name << ": " << t->warning().c_str()
             << nl << endl;
     }
     if (!t->identity())
     {
-        Info<< "    release " << releaseName << ": " << file
+        Info<< "    " << a.kind << ' ' << a.name << ": " << file
             << " transformed " << t->description().c_str() << nl;
     }
     return t;
 }
 
 
-//- The release raster's values as thickness: finite and >= 0 where not
-//  nodata (nodata and 0: no release)
-void checkThicknessRaster
+//- The raster's values (thickness or cResistance): finite and >= 0 where
+//  not nodata (nodata and 0: none)
+void checkValueRaster
 (
     const terrain::Raster& r, const fileName& file, const dictionary& d,
-    const word& releaseName
+    const release& a
 )
 {
     const bool nanIsNodata = r.hasNodata && std::isnan(r.nodata);
@@ -78,19 +78,20 @@ void checkThicknessRaster
             {
                 const std::array<double, 2> P = r.point(i + 0.5, j + 0.5);
                 FatalIOErrorInFunction(d)
-                    << "keyword 'raster' of release " << releaseName << ": "
-                    << file << " holds the thickness " << v << " at pixel ("
-                    << i << ", " << j << ") (X = " << P[0] << ", Y = " << P[1]
-                    << "): thickness must be finite and >= 0 (nodata and 0:"
-                    << " no release)" << nl << exit(FatalIOError);
+                    << "keyword 'raster' of " << a.kind << ' ' << a.name
+                    << ": " << file << " holds the " << a.valueKey << ' '
+                    << v << " at pixel (" << i << ", " << j << ") (X = "
+                    << P[0] << ", Y = " << P[1] << "): " << a.valueKey
+                    << " must be finite and >= 0 (nodata and 0: no "
+                    << a.kind << ")" << nl << exit(FatalIOError);
             }
         }
     }
 }
 
 
-//- Which of polygon, file and raster the release gives: exactly one
-word shapeKeyOf(const dictionary& d, const word& name)
+//- Which of polygon, file and raster the area gives: exactly one
+word shapeKeyOf(const dictionary& d, const release& a)
 {
     wordList shapes;
     for (const word& key : {"polygon", "file", "raster"})
@@ -108,9 +109,9 @@ word shapeKeyOf(const dictionary& d, const word& name)
             given += " '" + key + "'";
         }
         FatalIOErrorInFunction(d)
-            << "release " << name << ": give one of 'polygon' ((X Y)"
-            << " ...), 'file' (a shapefile) or 'raster' (a thickness"
-            << " raster), not" << given.c_str() << nl
+            << a.kind << ' ' << a.name << ": give one of 'polygon' ((X Y)"
+            << " ...), 'file' (a shapefile) or 'raster' (a raster of "
+            << a.valueKey << "), not" << given.c_str() << nl
             << exit(FatalIOError);
     }
     return shapes[0];
@@ -124,7 +125,7 @@ void readPolygon(const dictionary& d, release& r)
     if (pts.size() < 3)
     {
         FatalIOErrorInFunction(d)
-            << "keyword 'polygon' of release " << r.name
+            << "keyword 'polygon' of " << r.kind << ' ' << r.name
             << ": at least 3 vertices expected, got " << pts.size()
             << nl << exit(FatalIOError);
     }
@@ -152,9 +153,9 @@ void readShapefile
     }
     catch (const terrain::gdalError& err)
     {
-        releaseError(d, "file", r.name, err);
+        releaseError(d, "file", r, err);
     }
-    const auto tr = toDemSystem(wkt, dem.raster.wkt, f, d, "file", r.name);
+    const auto tr = toDemSystem(wkt, dem.raster.wkt, f, d, "file", r);
     try
     {
         for (terrain::Polygon& poly : r.polygons)
@@ -167,14 +168,14 @@ void readShapefile
     }
     catch (const terrain::gdalError& err)
     {
-        releaseError(d, "file", r.name, err);
+        releaseError(d, "file", r, err);
     }
 }
 
 
-//- raster: the thickness raster, checked, and its transformation to the
-//  DEM's system
-void readThicknessRaster
+//- raster: the raster of the value, checked, and its transformation to
+//  the DEM's system
+void readValueRaster
 (
     const Time& runTime, const dictionary& d, const terrainDem& dem,
     release& r
@@ -186,7 +187,7 @@ void readThicknessRaster
     }
     catch (const terrain::gdalError& err)
     {
-        releaseError(d, "raster", r.name, err);
+        releaseError(d, "raster", r, err);
     }
     r.rasterFile = caseFile(runTime, d, "raster");
     try
@@ -195,36 +196,44 @@ void readThicknessRaster
     }
     catch (const terrain::gdalError& err)
     {
-        releaseError(d, "raster", r.name, err);
+        releaseError(d, "raster", r, err);
     }
-    checkThicknessRaster(r.raster, r.rasterFile, d, r.name);
-    if (d.found("thickness"))
+    checkValueRaster(r.raster, r.rasterFile, d, r);
+    if (d.found(r.valueKey))
     {
         FatalIOErrorInFunction(d)
-            << "keyword 'thickness' of release " << r.name
-            << ": a release raster gives the thickness itself;"
-            << " remove 'thickness' (or scale the raster)" << nl
-            << exit(FatalIOError);
+            << "keyword '" << r.valueKey << "' of " << r.kind << ' '
+            << r.name << ": a raster gives the " << r.valueKey
+            << " itself; remove '" << r.valueKey << "' (or scale the"
+            << " raster)" << nl << exit(FatalIOError);
     }
     r.rasterToDem = toDemSystem
     (
-        r.raster.wkt, dem.raster.wkt, r.rasterFile, d, "raster", r.name
+        r.raster.wkt, dem.raster.wkt, r.rasterFile, d, "raster", r
     );
 }
 
 
-//- One entry of the release dictionary
-release readRelease
+//- One entry of the area dictionary `kind`
+release readArea
 (
-    const Time& runTime, const entry& e, const terrainDem& dem
+    const Time& runTime, const entry& e, const terrainDem& dem,
+    const word& kind
 )
 {
     const dictionary& d = e.dict();
-    checkKeywords(d, releaseKeywords, "release " + e.keyword());
+    const bool thickness = valueKeyOf(kind) == "thickness";
+    checkKeywords
+    (
+        d, thickness ? releaseKeywords : resistanceKeywords,
+        kind + " " + e.keyword()
+    );
     release r;
+    r.kind = kind;
     r.name = e.keyword();
+    r.valueKey = valueKeyOf(kind);
     r.dict = &d;
-    r.shapeKey = shapeKeyOf(d, r.name);
+    r.shapeKey = shapeKeyOf(d, r);
     if (r.shapeKey == "polygon")
     {
         readPolygon(d, r);
@@ -235,17 +244,22 @@ release readRelease
     }
     else
     {
-        readThicknessRaster(runTime, d, dem, r);
+        readValueRaster(runTime, d, dem, r);
     }
     if (r.shapeKey != "raster")
     {
-        r.thickness = readPositive(d, "thickness");
+        r.value = readPositive(d, r.valueKey);
+    }
+    if (!thickness)
+    {
+        // A coefficient per area of the bed: no direction to convert
+        return r;
     }
     const word dir = d.get<word>("thicknessDirection");
     if (dir != "normal" && dir != "vertical")
     {
         FatalIOErrorInFunction(d)
-            << "keyword 'thicknessDirection' of release " << r.name
+            << "keyword 'thicknessDirection' of " << r.kind << ' ' << r.name
             << ": unknown '" << dir << "'. Valid choices: (normal"
             << " vertical)" << nl << exit(FatalIOError);
     }
@@ -256,33 +270,46 @@ release readRelease
 } // End anonymous namespace
 
 
-std::vector<release> readReleases
+word valueKeyOf(const word& kind)
+{
+    return kind == "resistance" ? "cResistance" : "thickness";
+}
+
+
+std::vector<release> readAreas
 (
-    const Time& runTime, const dictionary& dict, const terrainDem& dem
+    const Time& runTime, const dictionary& dict, const terrainDem& dem,
+    const word& kind
 )
 {
-    if (!dict.isDict("release") || dict.subDict("release").empty())
+    std::vector<release> areas;
+    if (kind != "release" && !dict.found(kind))
+    {
+        return areas;
+    }
+    const std::string example = kind == "resistance"
+      ? "{ polygon ((X Y) ...); cResistance 0.01; }"
+      : "{ polygon ((X Y) ...); thickness 1; thicknessDirection normal; }";
+    if (!dict.isDict(kind) || dict.subDict(kind).empty())
     {
         FatalIOErrorInFunction(dict)
-            << "keyword 'release': a dictionary of one or more release"
-            << " entries { polygon ((X Y) ...); thickness 1;"
-            << " thicknessDirection normal; } expected" << nl
+            << "keyword '" << kind << "': a dictionary of one or more "
+            << kind << " entries " << example.c_str() << " expected" << nl
             << exit(FatalIOError);
     }
-    const dictionary& releaseDict = dict.subDict("release");
-    std::vector<release> releases;
-    for (const entry& e : releaseDict)
+    const dictionary& areaDict = dict.subDict(kind);
+    for (const entry& e : areaDict)
     {
         if (!e.isDict())
         {
-            FatalIOErrorInFunction(releaseDict)
-                << "keyword 'release': entry '" << e.keyword()
-                << "' is not a dictionary { polygon ...; thickness ...; }"
-                << nl << exit(FatalIOError);
+            FatalIOErrorInFunction(areaDict)
+                << "keyword '" << kind << "': entry '" << e.keyword()
+                << "' is not a dictionary " << example.c_str() << nl
+                << exit(FatalIOError);
         }
-        releases.push_back(readRelease(runTime, e, dem));
+        areas.push_back(readArea(runTime, e, dem, kind));
     }
-    return releases;
+    return areas;
 }
 
 } // End namespace Foam

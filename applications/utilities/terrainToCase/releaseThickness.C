@@ -7,6 +7,7 @@
 #include "polygonClip.H"
 #include "rasterRelease.H"
 
+#include <cctype>
 #include <limits>
 #include <sstream>
 
@@ -114,7 +115,7 @@ double releaseMapper::cosSlope(label c, const release& r) const
     if (!(std::isfinite(gx) && std::isfinite(gy)))
     {
         FatalIOErrorInFunction(*r.dict)
-            << "keyword 'thicknessDirection' of release " << r.name
+            << "keyword 'thicknessDirection' of " << r.kind << ' ' << r.name
             << ": the DEM " << dem_.file << " has too few values around"
             << " the bed point (X = " << W[0] << ", Y = " << W[1]
             << ") of the mesh cell at x = " << x << ", y = " << y
@@ -156,8 +157,8 @@ void releaseMapper::outlineFailure
     }
     FatalIOErrorInFunction(*r.dict)
         << "keyword '" << r.shapeKey
-        << "' of release " << r.name
-        << ": the release outline passes (X = "
+        << "' of " << r.kind << ' ' << r.name
+        << ": the " << r.kind << " outline passes (X = "
         << X << ", Y = " << Y << ") "
         << why.str().c_str()
         << nl << exit(FatalIOError);
@@ -252,7 +253,7 @@ scalarField releaseMapper::polygonThickness(const release& r) const
     forAll(frac, c)
     {
         // Overlapping polygons of one release count once
-        d[c] = r.thickness*min(max(frac[c], scalar(0)), scalar(1));
+        d[c] = r.value*min(max(frac[c], scalar(0)), scalar(1));
     }
     return d;
 }
@@ -291,14 +292,14 @@ scalarField rasterReleaseThickness
     catch (const terrain::gdalError& err)
     {
         FatalIOErrorInFunction(*r.dict)
-            << "keyword 'raster' of release " << r.name << ": "
+            << "keyword 'raster' of " << r.kind << ' ' << r.name << ": "
             << err.what() << nl << exit(FatalIOError);
     }
     if (!mapped.nPixels)
     {
         FatalIOErrorInFunction(*r.dict)
-            << "keyword 'raster' of release " << r.name << ": "
-            << r.rasterFile << " holds no thickness > 0" << nl
+            << "keyword 'raster' of " << r.kind << ' ' << r.name << ": "
+            << r.rasterFile << " holds no " << r.valueKey << " > 0" << nl
             << exit(FatalIOError);
     }
     scalarField d(label(grid.nx*grid.ny), Zero);
@@ -310,82 +311,173 @@ scalarField rasterReleaseThickness
 }
 
 
-void reportRelease
+namespace
+{
+
+//- The kind of an area as a log line starts it: Release, Entrainment,
+//  Resistance
+std::string capitalised(const word& kind)
+{
+    std::string k(kind);
+    if (!k.empty())
+    {
+        k[0] = std::toupper(k[0]);
+    }
+    return k;
+}
+
+//- What the log says of a value of area r: the thickness's direction, a
+//  coefficient's unit
+std::string valueText(const release& r)
+{
+    if (r.valueKey == "thickness")
+    {
+        return r.vertical ? "vertical" : "normal";
+    }
+    return "1/m";
+}
+
+//- What area r gives, for the log: a thickness' volume, a coefficient's
+//  cells
+void writeAmount
 (
-    const release& r, const terrain::rasterRelease& mapped, scalar volume
+    Ostream& os, const release& r, scalar volume, const scalarField& values
 )
 {
+    if (r.valueKey == "thickness")
+    {
+        os  << "volume " << volume << " m^3";
+        return;
+    }
+    label n = 0;
+    for (const scalar v : values)
+    {
+        n += v > 0;
+    }
+    os  << n << " cells";
+}
+
+} // End anonymous namespace
+
+
+void reportRelease
+(
+    const release& r, const terrain::rasterRelease& mapped, scalar volume,
+    const scalarField& values
+)
+{
+    const std::string kind = capitalised(r.kind);
+    const bool thickness = r.valueKey == "thickness";
     if (r.shapeKey != "raster")
     {
-        Info<< "Release " << r.name << ": " << r.polygons.size()
-            << " polygon(s), thickness " << r.thickness << " m "
-            << (r.vertical ? "vertical" : "normal") << ", volume "
-            << volume << " m^3" << nl;
+        Info<< kind.c_str() << ' ' << r.name << ": " << r.polygons.size()
+            << " polygon(s), " << r.valueKey << ' ' << r.value
+            << (thickness ? " m " : " ") << valueText(r).c_str() << ", ";
+        writeAmount(Info, r, volume, values);
+        Info<< nl;
         return;
     }
     Info<< "    raster " << r.rasterFile << ": " << mapped.nPixels
-        << " pixels of thickness in [" << mapped.dMin << ", "
-        << mapped.dMax << "] m, sum of thickness x pixel area in"
-        << " the DEM's plan " << mapped.planVolume << " m^3; "
+        << " pixels of " << r.valueKey << " in [" << mapped.dMin << ", "
+        << mapped.dMax << "] " << (thickness ? "m" : "1/m")
+        << ", sum of " << r.valueKey << " x pixel area in"
+        << " the DEM's plan " << mapped.planVolume
+        << (thickness ? " m^3; " : " m; ")
         << mapped.subdivisions << " x " << mapped.subdivisions
         << " sub-pixels" << nl;
     if (mapped.nOutside || mapped.nOffDem)
     {
         WarningInFunction
-            << "release " << r.name << ": " << mapped.nOutside
+            << r.kind << ' ' << r.name << ": " << mapped.nOutside
             << " of the " << mapped.nPixels << " pixels of "
-            << r.rasterFile << " with thickness > 0 reach outside"
-            << " the mesh (" << mapped.outsideVolume << " m^3 of"
-            << " thickness x area there is dropped), "
+            << r.rasterFile << " with " << r.valueKey << " > 0 reach outside"
+            << " the mesh (" << mapped.outsideVolume
+            << (thickness ? " m^3" : " m") << " of "
+            << r.valueKey << " x area there is dropped), "
             << mapped.nOffDem << " reach off the DEM (dropped)"
             << nl << endl;
     }
-    Info<< "Release " << r.name << ": raster, thickness "
-        << (r.vertical ? "vertical" : "normal") << ", volume "
-        << volume << " m^3" << nl;
+    Info<< kind.c_str() << ' ' << r.name << ": raster, " << r.valueKey << ' '
+        << valueText(r).c_str() << ", ";
+    writeAmount(Info, r, volume, values);
+    Info<< nl;
 }
 
 
-releasedLayer releaseThickness
+void reportLayer(const std::vector<release>& areas, const areaLayer& layer)
+{
+    if (areas.empty())
+    {
+        return;
+    }
+    const word& kind = areas.front().kind;
+    if (kind == "release")
+    {
+        Info<< "Released volume " << layer.volume << " m^3";
+    }
+    else if (kind == "entrainment")
+    {
+        Info<< "Erodible volume (hEntrainable) " << layer.volume << " m^3";
+    }
+    else
+    {
+        label n = 0;
+        for (const scalar v : layer.values)
+        {
+            n += v > 0;
+        }
+        Info<< "Resistance areas: cResistance > 0 in " << n << " cells, up"
+            << " to " << max(layer.values) << " 1/m";
+    }
+}
+
+
+areaLayer releaseThickness
 (
     const std::vector<release>& releases, const terrainDem& dem,
     const thalwegProfile& profile, const chuteGrid& grid,
     const scalarField& zb
 )
 {
+    areaLayer layer;
+    if (releases.empty())
+    {
+        return layer;
+    }
     const releaseMapper mapper(dem, profile, grid, zb);
-    releasedLayer layer{scalarField(grid.nCells(), Zero), 0};
+    layer.values.setSize(grid.nCells(), Zero);
     for (const release& r : releases)
     {
-        // The thickness in each cell, normal or vertical as given
+        // The value in each cell, a thickness normal or vertical as given
         terrain::rasterRelease mapped;
         const scalarField d = r.shapeKey == "raster"
           ? mapper.rasterThickness(r, mapped)
           : mapper.polygonThickness(r);
         scalar volume = 0;
+        scalarField values(d.size(), Zero);
         forAll(d, c)
         {
             if (d[c] > 0)
             {
-                const scalar hc =
-                    d[c]*(r.vertical ? mapper.cosSlope(c, r) : 1);
-                layer.h[c] += hc;
-                volume += hc*mapper.cellArea();
+                values[c] = d[c]*(r.vertical ? mapper.cosSlope(c, r) : 1);
+                volume += values[c]*mapper.cellArea();
             }
         }
         if (!(volume > 0))
         {
             FatalIOErrorInFunction(*r.dict)
-                << "keyword '" << r.shapeKey << "' of release " << r.name
-                << ": the release "
+                << "keyword '" << r.shapeKey << "' of " << r.kind << ' '
+                << r.name << ": the " << r.kind << ' '
                 << (r.shapeKey == "raster" ? r.rasterFile + " " : "")
                 << "covers no area of the mesh" << nl
                 << exit(FatalIOError);
         }
-        reportRelease(r, mapped, volume);
+        reportRelease(r, mapped, volume, values);
+        layer.values += values;
         layer.volume += volume;
     }
-    Info<< "Released volume " << layer.volume << " m^3" << nl << endl;
+    reportLayer(releases, layer);
+    Info<< nl << endl;
     return layer;
 }
 

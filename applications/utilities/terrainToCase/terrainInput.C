@@ -12,7 +12,7 @@ namespace Foam
 const wordList terrainKeywords
 ({
     "dem", "axis", "halfWidth", "cellSize", "profileSmoothing", "extent",
-    "release"
+    "release", "entrainment", "resistance"
 });
 
 const wordList releaseKeywords
@@ -20,10 +20,15 @@ const wordList releaseKeywords
     "polygon", "file", "raster", "thickness", "thicknessDirection"
 });
 
+const wordList resistanceKeywords
+({
+    "polygon", "file", "raster", "cResistance"
+});
+
 
 void checkKeywords
 (
-    const dictionary& d, const wordList& valid, const word& what
+    const dictionary& d, const wordList& valid, const std::string& what
 )
 {
     for (const word& key : d.toc())
@@ -31,7 +36,8 @@ void checkKeywords
         if (!valid.found(key) && key != "FoamFile")
         {
             FatalIOErrorInFunction(d)
-                << "Unknown keyword '" << key << "' in " << what << "." << nl
+                << "Unknown keyword '" << key << "' in " << what.c_str()
+                << "." << nl
                 << "Valid keywords: " << flatOutput(valid) << nl
                 << exit(FatalIOError);
         }

@@ -28,6 +28,30 @@ Description
                 thicknessDirection vertical;     // (no 'thickness' keyword)
             }
         }
+        entrainment                           // optional: 0/hEntrainable
+        {
+            bed1
+            {
+                polygon     ((X Y) ...);      // or file, or raster
+                thickness   0.5;              // [m] erodible thickness
+                thicknessDirection vertical;  // normal | vertical
+            }
+        }
+        resistance                            // optional: 0/cResistance
+        {
+            forest1
+            {
+                polygon     ((X Y) ...);      // or file, or raster
+                cResistance 0.01;             // [1/m] drag c |u|^2
+            }
+        }
+
+    entrainment and resistance (docs/design.md section 7) are read and
+    mapped as release is (a polygon's value times the fraction of each
+    cell it covers, a raster's area-weighted mean, the areas of one
+    dictionary summed, the same refusals); the erodible thickness is
+    normal to the bed like h (vertical: d cos(theta)), cResistance is
+    mapped as given.
 
     The DEM's grid may be north-up or rotated (any affine geotransform).
     Polygon vertices in the dictionary are in the DEM's coordinates; a
@@ -65,6 +89,11 @@ Description
                                      becomes d cos(theta), theta the DEM's
                                      slope there
         0/U                          zero
+        0/hEntrainable, 0/cResistance
+                                     where terrainDict has entrainment,
+                                     resistance: as 0/h (zeroGradient
+                                     patches); without the entry an
+                                     existing file is left (a warning)
         constant/terrainMapping      what maps (x, y, z) back to the DEM's
                                      world coordinates (hazardMaps reads it)
 
@@ -114,7 +143,8 @@ Description
     keywords, the axis and the mesh's size), terrainDem (the DEM),
     thalwegProfile (the profile along the axis, the inclination table and
     the mesh over it), bedElevation (zb and its steepness), releaseInput
-    (the release entries), releaseThickness (h) and caseFiles (writing).
+    (the release, entrainment and resistance entries), releaseThickness
+    (h, hEntrainable, cResistance) and caseFiles (writing).
 
 Usage
     terrainToCase [-dict file]
@@ -158,7 +188,12 @@ int main(int argc, char *argv[])
         "  release           { <name> { ... } ... }, each entry with one of\n"
         "      polygon ((X Y) ...);  file \"<.shp>\";  raster \"<.asc|.tif>\";\n"
         "      thickness > 0 [m] (not with raster);\n"
-        "      thicknessDirection vertical | normal;"
+        "      thicknessDirection vertical | normal;\n"
+        "  entrainment       { <name> { ... } ... }  optional: 0/hEntrainable\n"
+        "      entries as release's (the thickness erodible);\n"
+        "  resistance        { <name> { ... } ... }  optional: 0/cResistance\n"
+        "      polygon, file or raster;  cResistance > 0 [1/m] (not with"
+        " raster);"
     );
     argList::addOption("dict", "file", "alternative dictionary");
     argList::noParallel();
@@ -193,12 +228,19 @@ int main(int argc, char *argv[])
         // The plan mode: the DEM's own plan grid
         const planGrid grid = readPlanGrid(dict, dem);
         const planBed bed = bedOnPlan(dict, dem, grid);
-        const std::vector<release> releases =
-            readReleases(runTime, dict, dem);
-        const releasedLayer layer =
-            planReleaseThickness(releases, dem, grid, bed);
+        const auto onPlan = [&](const word& kind)
+        {
+            return planReleaseThickness
+            (
+                readAreas(runTime, dict, dem, kind), dem, grid, bed
+            );
+        };
+        caseLayers layers;
+        layers.h = onPlan("release");
+        layers.hEntrainable = onPlan("entrainment");
+        layers.cResistance = onPlan("resistance");
 
-        writePlanCaseFiles(runTime, dict, dem, grid, bed, layer);
+        writePlanCaseFiles(runTime, dict, dem, grid, bed, layers);
 
         Info<< "End\n" << endl;
         return 0;
@@ -208,11 +250,19 @@ int main(int argc, char *argv[])
     const chuteGrid grid = gridOnProfile(dict, axis, profile);
     const scalarField zb = bedElevation(dict, dem, profile, grid);
     reportBedSlope(zb, profile, grid);
-    const std::vector<release> releases = readReleases(runTime, dict, dem);
-    const releasedLayer layer =
-        releaseThickness(releases, dem, profile, grid, zb);
+    const auto onMesh = [&](const word& kind)
+    {
+        return releaseThickness
+        (
+            readAreas(runTime, dict, dem, kind), dem, profile, grid, zb
+        );
+    };
+    caseLayers layers;
+    layers.h = onMesh("release");
+    layers.hEntrainable = onMesh("entrainment");
+    layers.cResistance = onMesh("resistance");
 
-    writeCaseFiles(runTime, dict, dem, axis, profile, grid, zb, layer);
+    writeCaseFiles(runTime, dict, dem, axis, profile, grid, zb, layers);
 
     Info<< "End\n" << endl;
     return 0;
