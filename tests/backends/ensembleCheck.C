@@ -12,9 +12,21 @@
     (the seed is printed), always with the first and the last; both ways
     the CPU backend runs (OpenMP over members when there are at least as
     many members as threads; else member after member), double and float.
+    The bed's cover (coverExactness): every member of
+    shcases::coveredPlaneMembers (an erodible layer across the track and
+    a resistance patch; entrainment models none, constantRate at three
+    rates and each other model of the list; resistance none or scaled by
+    0.5, 1, 2; one member starting with an eroded depth) against its
+    single run as above, the erodible layer left and the eroded depth
+    too, with the layer and eroded volumes of the diagnostics; that the
+    case does what it is for: the constantRate members take material up,
+    the layer runs out somewhere, constantRate members of different rates
+    end with different layers, and each member with a resistance ends
+    elsewhere than its run without.
     Refused: an empty ensemble, and members with another grid, boundary
     condition, inclination or topography (std::invalid_argument naming
-    the member).
+    the member); a member with a negative erodible thickness (InputError
+    naming hEntrainable and the member).
 \*---------------------------------------------------------------------------*/
 
 #include "cpu/cpuSolver.H"
@@ -34,6 +46,7 @@
 #include <random>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 using namespace sh;
 using shtest::Counter;
@@ -108,6 +121,131 @@ void exactness(Counter& t, int nMembers, int threads, unsigned seed)
     );
 }
 
+template<class Real>
+void coverExactness(Counter& t, int nMembers, int threads)
+{
+#ifdef _OPENMP
+    omp_set_num_threads(threads);
+#endif
+    const char* prec = sizeof(Real) == 8 ? "double" : "float";
+    const std::vector<Problem<Real>> members =
+        shcases::coveredPlaneMembers<Real>(1, nMembers);
+    std::unique_ptr<EnsembleSolver<Real>> e = makeCpuEnsemble(members);
+    const double ends[] = {1.5, 3, 6};
+    e->advance(ends[0], 1e300);
+    const bool early = e->advance(ends[1], 0.0);
+    bool reached = e->advance(ends[1], 1e300);
+    reached = e->advance(ends[2], 1e300) && reached;
+    std::printf
+    (
+        "\n  bed's cover, %s, %d members, %d threads (%s), every member"
+        " compared:\n    member  model          c_res  eroded volume"
+        "  layer volume  cells run out\n",
+        prec, nMembers, threads, e->name().c_str()
+    );
+
+    std::string bad;
+    bool rateEntrains = true;
+    int runOut = 0;
+    int resisting = 0;
+    bool resistanceActs = true;
+    //- The constantRate members' rates and layers left
+    std::vector<std::pair<Real, std::vector<Real>>> layers;
+    for (int m = 0; m < nMembers; ++m)
+    {
+        const Problem<Real>& pb = members[m];
+        CpuSolver<Real> single(pb, true);
+        for (const double tEnd : ends)
+        {
+            single.advance(tEnd, 1e300);
+        }
+        const std::string b = compareMember(*e, m, single);
+        if (!b.empty())
+        {
+            bad += " member " + std::to_string(m) + ":" + b + ";";
+        }
+        const Diagnostics d = e->diagnostics(m);
+        std::vector<Real> layer, eroded;
+        e->getCover(m, layer, eroded);
+        int out = 0;
+        for (std::size_t c = 0; c < layer.size(); ++c)
+        {
+            out += pb.hEntrainable[c] > Real(0) && layer[c] == Real(0);
+        }
+        runOut += out;
+        const EntrainmentModel model = pb.params.entrainment.model;
+        if (model == EntrainmentModel::ConstantRate)
+        {
+            layers.emplace_back(pb.params.entrainment.constantRate.rate, layer);
+        }
+        if (model == EntrainmentModel::ConstantRate && !(d.erodedVolume > 0))
+        {
+            rateEntrains = false;
+        }
+        const double cRes = pb.cResistance.empty() ? 0.0
+            : double(*std::max_element(pb.cResistance.begin(), pb.cResistance.end()));
+        std::printf
+        (
+            "    %6d  %-13s %6.3f  %13.6g  %12.6g  %13d\n", m,
+            toString(model).c_str(), cRes, d.erodedVolume, d.layerVolume, out
+        );
+        if (!pb.cResistance.empty())
+        {
+            // The same member without its resistance
+            ++resisting;
+            Problem<Real> bare = pb;
+            bare.cResistance.clear();
+            CpuSolver<Real> without(bare, true);
+            for (const double tEnd : ends)
+            {
+                without.advance(tEnd, 1e300);
+            }
+            std::vector<Real> h, hu, hv, h1, hu1, hv1;
+            e->getState(m, h, hu, hv);
+            without.getState(h1, hu1, hv1);
+            resistanceActs = resistanceActs && !shtest::same(h, h1);
+        }
+    }
+    bool layersDiffer = true;
+    int pairs = 0;
+    for (std::size_t a = 0; a < layers.size(); ++a)
+    {
+        for (std::size_t b = a + 1; b < layers.size(); ++b)
+        {
+            if (layers[a].first != layers[b].first)
+            {
+                ++pairs;
+                layersDiffer = layersDiffer
+                 && !shtest::same(layers[a].second, layers[b].second);
+            }
+        }
+    }
+    t.check
+    (
+        !early && reached && bad.empty(),
+        std::string("bed's cover, ") + prec + ", "
+      + std::to_string(nMembers) + " members on "
+      + std::to_string(threads) + " threads: each member bit for bit its"
+        " single run at t = 6 (state, layer, eroded depth, maps, clock,"
+        " diagnostics)" + (bad.empty() ? "" : " -" + bad)
+    );
+    t.check
+    (
+        rateEntrains && runOut > 0 && pairs > 0 && layersDiffer,
+        std::string("bed's cover, ") + prec + ": every constantRate member"
+        " took material up, the layer ran out in " + std::to_string(runOut)
+      + " cells of the members, the layers of the " + std::to_string(pairs)
+      + " pairs of constantRate members of different rates differ"
+    );
+    t.check
+    (
+        resisting > 0 && resistanceActs,
+        std::string("bed's cover, ") + prec + ": each of the "
+      + std::to_string(resisting) + " members with a resistance ends"
+        " with another h than its run without"
+    );
+}
+
 void refusals(Counter& t)
 {
     const auto refused = [](std::vector<Problem<double>> ms)
@@ -139,6 +277,26 @@ void refusals(Counter& t)
         "an empty ensemble and members with another grid, side, inclination"
         " or topography refused"
     );
+
+    std::vector<Problem<double>> cover = shcases::coveredPlaneMembers<double>(1, 4);
+    cover[3].hEntrainable[7] = -0.01;
+    std::string what;
+    try
+    {
+        makeCpuEnsemble(cover);
+    }
+    catch (const InputError& e)
+    {
+        std::printf("    refused: %s\n", e.what());
+        what = e.keyword() + " | " + e.what();
+    }
+    t.check
+    (
+        what.find("hEntrainable |") == 0
+     && what.find("member 3") != std::string::npos,
+        "a member with a negative erodible thickness refused (InputError"
+        " naming hEntrainable and member 3)"
+    );
 }
 
 } // namespace
@@ -155,6 +313,9 @@ int main(int argc, char* argv[])
     exactness<double>(t, 1, 2, seed);
     exactness<float>(t, 9, 2, seed + 1);
     exactness<double>(t, 5, 1, seed + 2);
+    coverExactness<double>(t, 12, 2);
+    coverExactness<float>(t, 10, 2);
+    coverExactness<double>(t, 6, 1);
     refusals(t);
     return t.finish();
 }

@@ -25,7 +25,17 @@
     t = 0.5, 1 and 1.5 (a stop by the wall budget in the second leg),
     each member bit for bit its CpuSolver run (float: unless
     SH_CUDA_FLOAT_APPROX), its single CUDA run and its CPU ensemble's
-    member; double in one launch, float 2 members a launch.  Refused:
+    member; double in one launch, float 2 members a launch.  The bed's
+    cover (coverExactness, the same comparisons, the erodible layer left,
+    the eroded depth and their volumes besides): every member of
+    tests/common/ensembleCases.H coveredPlaneMembers (13 members: an
+    erodible layer and a resistance patch on the inclined plane;
+    entrainment none, constantRate at three rates and each other model
+    of the list, resistance none or scaled by 0.5, 1, 2) to t = 1.5, 6
+    (maxDt 0.02, wall budget) and 12, in one launch and 4 members a
+    launch; and the plan members with a cover (planMember covered: a
+    layer on the DEM's slope, rates 0.05, 0.1 m/s and none, resistance
+    scaled 1, 0, 2).  Refused:
     members with another grid, and a slope-coordinate member among plan
     ones (std::invalid_argument, as the CPU backend).
 
@@ -41,6 +51,7 @@
 #include "testing.H"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -222,7 +233,7 @@ void exactness(Counter& t, int k, int nMembers, int chunk, unsigned seed)
 //  floor, 97 x 41 cells) with the friction angle delta and the release's
 //  thickness scaled, hazard maps on
 template<class Real>
-Problem<Real> planMember(int k)
+Problem<Real> planMember(int k, bool covered = false)
 {
     const double deltas[] = {24, 20, 27};
     const double scales[] = {1, 1.25, 0.75};
@@ -235,6 +246,13 @@ Problem<Real> planMember(int k)
     in.coulomb.deltaDeg = delta;
     in.rho = 1500;
     in.arrivalThreshold = 0.004;
+    // With the cover: constantRate at 0.05, 0.1 m/s and none
+    const double rates[] = {0.05, 0.1, 0};
+    if (covered && rates[k % 3] > 0)
+    {
+        in.entrainmentModel = EntrainmentModel::ConstantRate;
+        in.constantRate.rate = rates[k % 3];
+    }
     Problem<Real> pb = shcases::planProblem<Real>
     (
         in, 97, 41, 0, 9.7, -2.05, 2.05, shcases::planBumpyBed,
@@ -250,8 +268,49 @@ Problem<Real> planMember(int k)
     );
     pb.bc.type[xMin] = BCType::wall;
     pb.bc.type[yMin] = BCType::wall;
+    if (covered)
+    {
+        // A layer of 0.03 m (per plan area) below x = 6, a resistance
+        // patch of 0.5 [1/m] times 1, 0, 2 beyond x = 4
+        const double cScale[] = {1, 0, 2};
+        const Grid<Real>& g = pb.grid;
+        pb.hEntrainable.assign(pb.nCells(), Real(0));
+        if (cScale[k % 3] > 0)
+        {
+            pb.cResistance.assign(pb.nCells(), Real(0));
+        }
+        for (int j = 0; j < g.ny; ++j)
+        {
+            for (int i = 0; i < g.nx; ++i)
+            {
+                const double x = double(g.xc(i));
+                if (x > 2.5 && x < 6)
+                {
+                    pb.hEntrainable[pb.cell(i, j)] = Real(0.03);
+                }
+                if (cScale[k % 3] > 0 && x > 4)
+                {
+                    pb.cResistance[pb.cell(i, j)] = Real(0.5*cScale[k % 3]);
+                }
+            }
+        }
+    }
     return pb;
 }
+
+//- everyMember (below): every member of an ensemble against its single
+//  runs at three end times; returns the members' eroded volume at the end
+template<class Real>
+double everyMember
+(
+    Counter& t,
+    const std::vector<Problem<Real>>& members,
+    int chunk,
+    const std::string& what,
+    const std::string& where,
+    const std::array<double, 3>& ends,
+    double legDt
+);
 
 //- An ensemble in plan coordinates (PlanStages' batched kernels): three
 //  members of planMember (delta 24, 20, 27 deg; release x 1, 1.25, 0.75),
@@ -268,14 +327,74 @@ Problem<Real> planMember(int k)
 template<class Real>
 void planExactness(Counter& t, int chunk)
 {
-    const char* prec = sizeof(Real) == 8 ? "double" : "float";
-    const bool againstCpu = sizeof(Real) == 8 || !cudaFloatApproximate();
-    const int nMembers = 3;
     std::vector<Problem<Real>> members;
-    for (int k = 0; k < nMembers; ++k)
+    for (int k = 0; k < 3; ++k)
     {
         members.push_back(planMember<Real>(k));
     }
+    everyMember
+    (
+        t, members, chunk, "plan coordinates",
+        "members on bumpy DEM", {0.5, 1.0, 1.5}, 0.002
+    );
+}
+
+//- The bed's cover: coveredPlaneMembers (tests/common/ensembleCases.H)
+//  and the plan members with a cover, each member compared as
+//  planExactness compares them (the layer left and the eroded depth
+//  too: compareMember)
+template<class Real>
+void coverExactness(Counter& t, int chunk)
+{
+    const double onPlane = everyMember
+    (
+        t, shcases::coveredPlaneMembers<Real>(1, 13), chunk,
+        "bed's cover", "members on the plane", {1.5, 6, 12}, 0.02
+    );
+    std::vector<Problem<Real>> plan;
+    for (int k = 0; k < 3; ++k)
+    {
+        plan.push_back(planMember<Real>(k, true));
+    }
+    const double onDem = everyMember
+    (
+        t, plan, chunk, "bed's cover in plan coordinates",
+        "members on bumpy DEM", {0.5, 1.0, 1.5}, 0.002
+    );
+    std::printf
+    (
+        "    eroded volume of all members: %g (plane), %g (DEM)\n",
+        onPlane, onDem
+    );
+    t.check
+    (
+        onPlane > 0 && onDem > 0,
+        std::string("bed's cover, ") + (sizeof(Real) == 8 ? "double" : "float")
+      + ": the members take material up, on the plane and on the DEM"
+    );
+}
+
+//- Every member of an ensemble of members, batched on the GPU and
+//  advanced to ends[0], ends[1] (maxDt legDt, first stopped by a spent
+//  wall budget) and ends[2], against its single CUDA run and, where the
+//  float kernels are IEEE-rounded, its CpuSolver run and its member of
+//  the CPU ensemble, bit for bit at each end time (compareMember); the
+//  wet cell updates summed against the single CUDA runs'
+template<class Real>
+double everyMember
+(
+    Counter& t,
+    const std::vector<Problem<Real>>& members,
+    int chunk,
+    const std::string& what,
+    const std::string& where,
+    const std::array<double, 3>& ends,
+    double legDt
+)
+{
+    const char* prec = sizeof(Real) == 8 ? "double" : "float";
+    const bool againstCpu = sizeof(Real) == 8 || !cudaFloatApproximate();
+    const int nMembers = int(members.size());
     if (chunk > 0)
     {
         setenv("SH_ENSEMBLE_CHUNK", std::to_string(chunk).c_str(), 1);
@@ -300,21 +419,20 @@ void planExactness(Counter& t, int chunk)
     }
     std::printf
     (
-        "\n  plan coordinates, %s, %d members on %d x %d cells (%s), against"
+        "\n  %s, %s, %d members on %d x %d cells (%s), against"
         " the single CUDA runs%s\n",
-        prec, nMembers, members[0].grid.nx, members[0].grid.ny,
+        what.c_str(), prec, nMembers, members[0].grid.nx, members[0].grid.ny,
         e->name().c_str(),
         againstCpu ? ", CpuSolver and the CPU ensemble's members" : ""
     );
 
-    const double ends[] = {0.5, 1.0, 1.5};
     std::string bad;
     bool early = false;
     bool reached = true;
     for (int leg = 0; leg < 3; ++leg)
     {
         const double tEnd = ends[leg];
-        const double maxDt = leg == 1 ? 0.002 : 1e30;
+        const double maxDt = leg == 1 ? legDt : 1e30;
         e->setMaxDt(maxDt);
         if (cpuEnsemble) { cpuEnsemble->setMaxDt(maxDt); }
         for (auto& s : cpu) { s->setMaxDt(maxDt); }
@@ -385,21 +503,32 @@ void planExactness(Counter& t, int chunk)
         bad += " wet cell updates " + std::to_string(e->wetCellUpdates())
           + " against " + std::to_string(wet) + ";";
     }
+    const auto num = [](double x)
+    {
+        char b[32];
+        std::snprintf(b, sizeof b, "%g", x);
+        return std::string(b);
+    };
     t.check
     (
         !early && reached && bad.empty(),
-        std::string("plan coordinates, ") + prec + ", "
-      + std::to_string(nMembers) + " members on bumpy DEM "
-      + std::to_string(members[0].grid.nx) + " x "
+        what + ", " + prec + ", " + std::to_string(nMembers) + " " + where
+      + " " + std::to_string(members[0].grid.nx) + " x "
       + std::to_string(members[0].grid.ny)
       + (chunk > 0 ? ", " + std::to_string(chunk) + " per launch" : "")
       + ": each member bit for bit its single CUDA run"
       + (againstCpu ? ", CpuSolver run and CPU ensemble member" : "")
-      + " at t = 0.5, 1 (maxDt"
-        " 0.002, stopped by the wall budget, then on), 1.5, wet cell"
-        " updates summed"
+      + " at t = " + num(ends[0]) + ", " + num(ends[1]) + " (maxDt "
+      + num(legDt) + ", stopped by the wall budget, then on), "
+      + num(ends[2]) + ", wet cell updates summed"
       + (bad.empty() ? "" : " -" + bad)
     );
+    double eroded = 0;
+    for (int m = 0; m < nMembers; ++m)
+    {
+        eroded += e->diagnostics(m).erodedVolume;
+    }
+    return eroded;
 }
 
 //- A member in slope coordinates among plan ones: refused, as another
@@ -467,6 +596,10 @@ int main(int argc, char* argv[])
     exactness<float>(t, 2, 7, 3, seed + 4);
     planExactness<double>(t, 0);
     planExactness<float>(t, 2);
+    coverExactness<double>(t, 0);
+    coverExactness<double>(t, 4);
+    coverExactness<float>(t, 0);
+    coverExactness<float>(t, 4);
     refusal(t);
     planRefusal(t);
     return t.finish();

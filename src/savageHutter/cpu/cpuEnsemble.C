@@ -7,7 +7,9 @@ Description
     members are shared among the threads (each member's loops serial);
     with fewer, members run one after the other, each with OpenMP over
     its rows.  A CpuSolver's result does not depend on its thread count,
-    so both give every member its single run's numbers.
+    so both give every member its single run's numbers.  Each CpuSolver
+    has its member's cover (erodible layer, eroded depth, resistance) and
+    entrainment model, as a single run of the member's problem.
 \*---------------------------------------------------------------------------*/
 
 #include "cpuSolver.H"
@@ -123,6 +125,16 @@ public:
     ) override
     {
         members_.at(m)->getState(h, hu, hv);
+    }
+
+    void getCover
+    (
+        int m,
+        std::vector<Real>& hEntrainable,
+        std::vector<Real>& erodedDepth
+    ) override
+    {
+        members_.at(m)->getCover(hEntrainable, erodedDepth);
     }
 
     PeakMaps<Real> peakMaps(int m) override

@@ -41,21 +41,33 @@ void checkEnsemble(const std::vector<Problem<Real>>& members)
             " run serial)"
         );
     }
+    // Each member's cover as its single run checks it (the backends build
+    // the same arrays again, member by member)
     for (std::size_t k = 0; k < members.size(); ++k)
     {
         const Problem<Real>& m = members[k];
         if
         (
-            m.params.entrainment.on() || !m.hEntrainable.empty()
-         || !m.erodedDepth.empty() || !m.cResistance.empty()
+            m.hEntrainable.empty() && m.erodedDepth.empty()
+         && m.cResistance.empty()
         )
         {
+            continue;
+        }
+        try
+        {
+            const HostCover<Real> cover(m);
+        }
+        catch (const InputError& e)
+        {
+            // what() is "<keyword>: <message>"
+            const std::string what = e.what();
+            const std::size_t lead = e.keyword().size() + 2;
             throw InputError
             (
-                "entrainmentModel",
-                "member " + std::to_string(k) + ": ensembles do not run"
-                " the bed's cover yet (an entrainment model, hEntrainable,"
-                " cResistance); run the variants as single cases"
+                e.keyword(),
+                "member " + std::to_string(k) + ": "
+              + (what.size() >= lead ? what.substr(lead) : what)
             );
         }
     }
