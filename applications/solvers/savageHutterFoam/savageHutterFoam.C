@@ -36,9 +36,11 @@ Usage
     savageHutterFoam [-backend auto|cpu|cuda] [-precision double|single]
                      [-logInterval seconds] [-parallel] [-ensemble]
     savageHutterFoam -listFrictionLaws
+    savageHutterFoam -listEntrainmentModels
 
-    -listFrictionLaws: the friction laws of this build with their
-    coefficients, defaults and rules (no case needed).
+    -listFrictionLaws, -listEntrainmentModels: the friction laws and the
+    entrainment models of this build with their coefficients, defaults and
+    rules (no case needed).
 
     -ensemble: the members of system/ensembleDict (docs/design.md section 6)
     run together, each written under ensemble/member<k>/, the statistics
@@ -82,7 +84,7 @@ int main(int argc, char *argv[])
     runOptions::declare();
     #include "setRootCase.H"
     runSignals::install();   // again: argList sets OpenFOAM's own
-    if (listFrictionLaws(args))
+    if (listFrictionLaws(args) || listEntrainmentModels(args))
     {
         return 0;
     }

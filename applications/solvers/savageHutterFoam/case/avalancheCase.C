@@ -67,6 +67,43 @@ IOobject avalancheCase::reading(const Time& t, const fvMesh& m, const word& name
 }
 
 
+volScalarField* avalancheCase::readIfPresent
+(
+    const Time& t,
+    const fvMesh& m,
+    const word& name
+)
+{
+    const bool here =
+        io(t, m, name, IOobject::MUST_READ).typeHeaderOk<volScalarField>(true);
+    if (!onAll(here, name.c_str()))
+    {
+        return nullptr;
+    }
+    return new volScalarField(reading(t, m, name), m);
+}
+
+
+volScalarField* avalancheCase::readOrZero
+(
+    const Time& t,
+    const fvMesh& m,
+    const word& name
+)
+{
+    volScalarField* f = readIfPresent(t, m, name);
+    if (f)
+    {
+        return f;
+    }
+    return new volScalarField
+    (
+        io(t, m, name, IOobject::NO_READ), m,
+        dimensionedScalar(dimLength, Zero)
+    );
+}
+
+
 avalancheCase::avalancheCase(Time& t, const fvMesh& m)
 :
     runTime(t),
@@ -110,6 +147,16 @@ avalancheCase::avalancheCase(Time& t, const fvMesh& m)
     hasArrival(onAll(hasPeaks
      && io(t, m, "tArrival", IOobject::MUST_READ)
         .typeHeaderOk<volScalarField>(true), "tArrival")),
+    hEntrainable(readIfPresent(t, m, "hEntrainable")),
+    // With the layer: what it has lost so far (a restart's), else 0
+    erodedDepth
+    (
+        hEntrainable.valid() ? readOrZero(t, m, "erodedDepth") : nullptr
+    ),
+    cResistance(readIfPresent(t, m, "cResistance")),
+    hasEroded(hEntrainable.valid() && onAll(io(t, m, "erodedDepth",
+        IOobject::MUST_READ).typeHeaderOk<volScalarField>(true),
+        "erodedDepth")),
     H
     (
         input.plan()
@@ -158,6 +205,70 @@ void avalancheCase::copyFields(sh::Problem<Real>& pb) const
         pb.hu[k] = Real(hasMomentum ? hU[c].x() : h[c]*U[c].x());
         pb.hv[k] = Real(hasMomentum ? hU[c].y() : h[c]*U[c].y());
     }
+}
+
+
+template<class Real>
+void avalancheCase::copyCover(sh::Problem<Real>& pb) const
+{
+    // Plan coordinates: the layer per plan area, J times the normal
+    // thickness, as H = J h (toPlanState has set planJ)
+    const bool plan = input.plan();
+    if (hEntrainable.valid())
+    {
+        pb.hEntrainable.resize(h.size());
+        pb.erodedDepth.resize(hasEroded ? h.size() : 0);
+        forAll(h, c)
+        {
+            const label k = smesh.gridIndex(c);
+            const Real J = plan ? Real(planJ[c]) : Real(1);
+            pb.hEntrainable[k] = plan
+              ? Real(hEntrainable()[c])*J : Real(hEntrainable()[c]);
+            if (hasEroded)
+            {
+                pb.erodedDepth[k] = plan
+                  ? Real(erodedDepth()[c])*J : Real(erodedDepth()[c]);
+            }
+        }
+    }
+    if (cResistance.valid())
+    {
+        // A coefficient per bed area: the same in both coordinates
+        pb.cResistance.resize(h.size());
+        forAll(h, c)
+        {
+            pb.cResistance[smesh.gridIndex(c)] = Real(cResistance()[c]);
+        }
+    }
+}
+
+
+template<class Real>
+void avalancheCase::fillCover
+(
+    const std::vector<Real>& layer,
+    const std::vector<Real>& eroded
+)
+{
+    if (!hEntrainable.valid() || layer.empty())
+    {
+        return;
+    }
+    const bool plan = input.plan();
+    const label n = h.size();
+    scalar* lp = hEntrainable->primitiveFieldRef().data();
+    scalar* ep = erodedDepth->primitiveFieldRef().data();
+    const scalar* Jp = plan ? planJ.cdata() : nullptr;
+    #pragma omp parallel for schedule(static)
+    for (label c = 0; c < n; ++c)
+    {
+        const label k = smesh.gridIndex(c);
+        // Plan coordinates: back to the thickness normal to the bed
+        lp[c] = plan ? scalar(layer[k])/Jp[c] : scalar(layer[k]);
+        ep[c] = plan ? scalar(eroded[k])/Jp[c] : scalar(eroded[k]);
+    }
+    hEntrainable->correctBoundaryConditions();
+    erodedDepth->correctBoundaryConditions();
 }
 
 
@@ -288,6 +399,7 @@ sh::Problem<Real> avalancheCase::problem(sh::Halo<Real>* halo)
             input.fail(e);
         }
     }
+    copyCover(pb);
     if (hasPressure)
     {
         reportPressureRestart(pb);
@@ -479,6 +591,15 @@ void avalancheCase::selectWrites(const bool restart)
     {
         set(H());
     }
+    if (hEntrainable.valid())
+    {
+        set(hEntrainable());
+        set(erodedDepth());
+    }
+    if (cResistance.valid())
+    {
+        set(cResistance());
+    }
 }
 
 
@@ -556,6 +677,15 @@ autoPtr<avalancheCase> readCase(Time& runTime, const fvMesh& mesh)
     template void avalancheCase::toPlanState<Real>                            \
     (                                                                         \
         sh::Problem<Real>&, sh::Halo<Real>*                                   \
+    );                                                                        \
+    template void avalancheCase::copyCover<Real>                              \
+    (                                                                         \
+        sh::Problem<Real>&                                                    \
+    ) const;                                                                  \
+    template void avalancheCase::fillCover<Real>                              \
+    (                                                                         \
+        const std::vector<Real>&,                                             \
+        const std::vector<Real>&                                              \
     );                                                                        \
     template void avalancheCase::reportPressureRestart<Real>                  \
     (                                                                         \

@@ -56,7 +56,7 @@ const wordList solverKeywords
 const wordList transportKeywords
 ({
     "g", "coordinates", "epsilon", "lambda", "inclination", "earthPressure",
-    "phi", "frictionModel", "rho", "arrivalThreshold"
+    "phi", "frictionModel", "rho", "arrivalThreshold", "entrainmentModel"
 });
 
 //- Calls f with OpenFOAM's fatal errors thrown as exceptions (the throw
@@ -151,6 +151,8 @@ caseInput::caseInput(const fvMesh& mesh)
 
     friction_ = frictionModel::New(tp);
     friction_->set(model);
+    entrainment_ = entrainmentModel::New(tp);
+    entrainment_->set(model);
 
     Info<< "    g             " << model.g << nl
         << "    epsilon       " << model.epsilon << nl
@@ -163,7 +165,16 @@ caseInput::caseInput(const fvMesh& mesh)
         << sh::toString(model.earthPressure).c_str() << nl
         << "    phi           " << model.phiDeg << " deg" << nl
         << "    frictionModel " << friction_->type() << " { "
-        << friction_->summary().c_str() << " }" << nl;
+        << friction_->summary().c_str() << " }" << nl
+        << "    entrainmentModel " << entrainment_->type();
+    if (entrainment_->on())
+    {
+        Info<< " { " << entrainment_->summary().c_str() << " }" << nl;
+    }
+    else
+    {
+        Info<< " (off: the released volume is all that flows)" << nl;
+    }
 
     readSources();
 
@@ -291,11 +302,27 @@ void caseInput::readFieldSelection()
     {
         return;
     }
-    // The fields of this case: pMax needs rho, H is plan coordinates'
+    // The fields of this case: pMax needs rho, H is plan coordinates',
+    // the cover's are the start time's (erodedDepth goes with
+    // hEntrainable)
+    const fileName startDir = mesh_.time().timePath();
+    const bool layer = returnReduce
+    (
+        isFile(startDir/"hEntrainable"), orOp<bool>()
+    );
+    const bool resistance = returnReduce
+    (
+        isFile(startDir/"cResistance"), orOp<bool>()
+    );
     wordList valid;
     for (const word& name : controlSettings::writableFields())
     {
-        if ((name != "pMax" || model.rho > 0) && (name != "H" || plan()))
+        const bool cover = name == "hEntrainable" || name == "erodedDepth";
+        if
+        (
+            (name != "pMax" || model.rho > 0) && (name != "H" || plan())
+         && (!cover || layer) && (name != "cResistance" || resistance)
+        )
         {
             valid.append(name);
         }
@@ -309,11 +336,18 @@ void caseInput::readFieldSelection()
             FatalIOErrorInFunction(cd)
                 << "writeFields at line " << e->startLineNumber()
                 << " names " << name << ", which this case does not have ("
-                << (name == "pMax"
-                  ? "the peak pressure needs rho in"
-                    " constant/transportProperties"
-                  : "H, the volume per plan area, is written in"
-                    " coordinates plan") << ")." << nl
+                << (
+                       name == "pMax"
+                     ? "the peak pressure needs rho in"
+                       " constant/transportProperties"
+                     : name == "H"
+                     ? "H, the volume per plan area, is written in"
+                       " coordinates plan"
+                     : name == "cResistance"
+                     ? "no field cResistance in the start time"
+                     : "hEntrainable and erodedDepth need the field"
+                       " hEntrainable in the start time"
+                   ) << ")." << nl
                 << "Valid choices: " << valid << nl << exit(FatalIOError);
         }
     }
@@ -604,6 +638,10 @@ const dictionary& caseInput::dictOf(const std::string& keyword) const
     {
         return friction_->coeffs();
     }
+    if (entrainment_.valid() && entrainment_->owns(keyword))
+    {
+        return entrainment_->coeffs();
+    }
     if (jetDict_ && (keyword == "centre" || keyword == "R"
      || keyword == "R_imp" || keyword == "u_jet"))
     {
@@ -698,9 +736,19 @@ sh::ModelInput caseInput::memberModel
 
 void caseInput::fail(const sh::InputError& e) const
 {
+    // An entrainment model's coefficient: its valid range too
+    const bool entrainmentCoeff =
+        (!friction_.valid() || !friction_->owns(e.keyword()))
+     && entrainment_.valid() && entrainment_->owns(e.keyword());
     FatalIOErrorInFunction(dictOf(e.keyword()))
-        << "Invalid " << e.keyword() << ": " << e.what() << nl
-        << exit(FatalIOError);
+        << "Invalid " << e.keyword() << ": " << e.what() << nl;
+    if (entrainmentCoeff)
+    {
+        FatalIOError
+            << "Valid range: "
+            << entrainment_->validRange(e.keyword()).c_str() << nl;
+    }
+    FatalIOError << exit(FatalIOError);
     std::abort();
 }
 

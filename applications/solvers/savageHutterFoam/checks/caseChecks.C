@@ -93,6 +93,9 @@ void avalancheCase::checkStartFiles(const Time& t, const fvMesh& m)
     checkFile<volScalarField>(t, m, "UMax", false);
     checkFile<volScalarField>(t, m, "pMax", false);
     checkFile<volScalarField>(t, m, "tArrival", false);
+    checkFile<volScalarField>(t, m, "hEntrainable", false);
+    checkFile<volScalarField>(t, m, "erodedDepth", false);
+    checkFile<volScalarField>(t, m, "cResistance", false);
     for (const word name : {"time", "writeGrid"})
     {
         IOobject uio
@@ -161,6 +164,7 @@ void avalancheCase::check()
     // checked against it, not against its directory's rounded name
     checkStartTime();
     checkInitialFields();
+    checkCover();
     checkMomentum();
     checkHazardMaps();
     Info<< endl;
@@ -392,6 +396,105 @@ void avalancheCase::checkInitialFields() const
 }
 
 
+void avalancheCase::checkCover() const
+{
+    const word now = runTime.timeName();
+    const dictionary& tp = input.transportProperties();
+    if (input.entraining() && !hEntrainable.valid())
+    {
+        // A model with nothing to take up is a field forgotten (or
+        // misnamed): refused rather than run as if without the model
+        const entry* e = tp.findEntry("entrainmentModel", keyType::LITERAL);
+        FatalIOErrorInFunction(tp)
+            << "entrainmentModel "
+            << sh::toString(input.model.entrainmentModel).c_str();
+        if (e)
+        {
+            FatalIOError << " at line " << e->startLineNumber();
+        }
+        FatalIOError
+            << " needs the erodible layer, the field hEntrainable [m], in"
+            << " the start time " << now << ": there is no "
+            << (runTime.timePath()/"hEntrainable") << nl
+            << "Write it with setAvalancheFields (hEntrainable in"
+            << " system/setAvalancheFieldsDict) or terrainToCase (an"
+            << " entrainment entry in system/terrainDict), or set"
+            << " entrainmentModel none" << nl << exit(FatalIOError);
+    }
+    if (!hEntrainable.valid() && isFile(runTime.timePath()/"erodedDepth"))
+    {
+        Info<< "erodedDepth in " << now << " is not used: no hEntrainable"
+            << " there" << nl;
+    }
+
+    // Every cell finite, >= 0 and at most 1e30
+    const auto nonNegative = [this]
+    (
+        const volScalarField& f,
+        const dimensionSet& dims,
+        const char* unit,
+        const char* meaning
+    )
+    {
+        checkDimensions(f, f.dimensions(), dims, unit);
+        forAll(f, c)
+        {
+            if (!(f[c] >= 0 && f[c] <= 1e30))
+            {
+                FatalIOErrorInFunction(f.objectPath())
+                    << f.name() << " = " << f[c] << " in cell " << c
+                    << " at " << mesh.C()[c] << ": " << meaning << nl
+                    << "Valid range: [0, 1e30] " << unit << nl
+                    << exit(FatalIOError);
+            }
+        }
+    };
+    if (hEntrainable.valid())
+    {
+        nonNegative
+        (
+            hEntrainable(), dimLength, "m",
+            "the erodible thickness left (normal to the bed) must be finite"
+            " and not negative"
+        );
+        if (hasEroded)
+        {
+            nonNegative
+            (
+                erodedDepth(), dimLength, "m",
+                "the thickness taken up so far must be finite and not"
+                " negative"
+            );
+        }
+        else if (input.entraining() && runTime.value() > 0)
+        {
+            Info<< "No erodedDepth in " << now << ": the eroded depth"
+                << " is counted from " << now << nl;
+        }
+        const scalar layer =
+            returnReduce(max(hEntrainable().primitiveField()), maxOp<scalar>());
+        Info<< "Erodible layer hEntrainable: largest " << layer << " m"
+            << (
+                   input.entraining()
+                 ? string(", taken up by entrainmentModel ")
+                 + sh::toString(input.model.entrainmentModel)
+                 : string(", not taken up (entrainmentModel none)")
+               ).c_str() << nl;
+    }
+    if (cResistance.valid())
+    {
+        nonNegative
+        (
+            cResistance(), dimless/dimLength, "1/m",
+            "the resistance coefficient must be finite and not negative"
+        );
+        Info<< "Resistance cResistance: largest "
+            << returnReduce(max(cResistance().primitiveField()), maxOp<scalar>())
+            << " 1/m (an extra drag c_res |u|^2)" << nl;
+    }
+}
+
+
 void avalancheCase::checkArrival() const
 {
     const scalar now = runTime.value();
@@ -434,6 +537,15 @@ void avalancheCase::checkSinglePrecision() const
     };
     bounded(h, "the thickness");
     bounded(zb, "the bed");
+    if (hEntrainable.valid())
+    {
+        bounded(hEntrainable(), "the erodible thickness");
+        bounded(erodedDepth(), "the eroded depth");
+    }
+    if (cResistance.valid())
+    {
+        bounded(cResistance(), "the resistance coefficient");
+    }
     forAll(sides, s)
     {
         if (!(sides[s].h <= big))

@@ -393,7 +393,7 @@ const wordList& controlSettings::writableFields()
     static const wordList names
     ({
         "h", "U", "hU", "H", "zb", "regime", "hMax", "UMax", "pMax",
-        "tArrival"
+        "tArrival", "hEntrainable", "erodedDepth", "cResistance"
     });
     return names;
 }
@@ -403,7 +403,8 @@ const wordList& controlSettings::restartFields()
 {
     static const wordList names
     ({
-        "h", "U", "hU", "H", "zb", "hMax", "UMax", "pMax", "tArrival"
+        "h", "U", "hU", "H", "zb", "hMax", "UMax", "pMax", "tArrival",
+        "hEntrainable", "erodedDepth", "cResistance"
     });
     return names;
 }

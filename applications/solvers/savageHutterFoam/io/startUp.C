@@ -43,6 +43,11 @@ void runOptions::declare()
         "listFrictionLaws",
         "list the friction laws, their coefficients and rules, and exit"
     );
+    argList::addBoolOption
+    (
+        "listEntrainmentModels",
+        "list the entrainment models, their coefficients and rules, and exit"
+    );
 }
 
 
@@ -76,6 +81,18 @@ bool listFrictionLaws(const argList& args)
         return false;
     }
     Info<< sh::describeFrictionLaws().c_str() << nl << "End" << nl << endl;
+    return true;
+}
+
+
+bool listEntrainmentModels(const argList& args)
+{
+    if (!args.found("listEntrainmentModels"))
+    {
+        return false;
+    }
+    Info<< sh::describeEntrainmentModels().c_str() << nl << "End" << nl
+        << endl;
     return true;
 }
 

@@ -88,8 +88,15 @@ avalancheRun<Real>::avalancheRun
 
     const sh::Diagnostics d0 = solver_->diagnostics();
     Info<< "Initial volume " << d0.volume << " m^3, " << d0.wetCells
-        << " wet cells, hMax " << d0.hMax << " m" << nl << nl
-        << "Starting time loop" << nl << endl;
+        << " wet cells, hMax " << d0.hMax << " m" << nl;
+    if (ac_.input.entraining())
+    {
+        // The flowing volume plus the layer's is what a closed domain
+        // keeps
+        Info<< "Erodible volume " << d0.layerVolume << " m^3, eroded so far "
+            << d0.erodedVolume << " m^3" << nl;
+    }
+    Info<< nl << "Starting time loop" << nl << endl;
 
     functions_.start();
     if (functions_.size())
@@ -372,6 +379,7 @@ void avalancheRun<Real>::write(const bool restart)
     // Time, which are its own until it has finished)
     solver_->getState(hs_, hus_, hvs_);
     solver_->getPeakMaps(peaks_);
+    solver_->getCover(layer_, eroded_);
     // Not written on any processor unless good on all
     const bool good = ac_.goodState(hs_, hus_, hvs_);
     finishWrite();
@@ -379,6 +387,7 @@ void avalancheRun<Real>::write(const bool restart)
     if (good)
     {
         ac_.fill(hs_, hus_, hvs_, peaks_);
+        ac_.fillCover(layer_, eroded_);
     }
     else
     {
@@ -589,6 +598,9 @@ void avalancheRun<Real>::logProgress(const bool final)
     // The peak speed to 3 digits; the moving volume as the volume
     char speed[32];
     snprintf(speed, sizeof(speed), "%.3g", d.maxSpeed);
+    // With an entrainment model: the volume taken up so far
+    char eroded[32];
+    snprintf(eroded, sizeof(eroded), "%.6g", d.erodedVolume);
     Info<< "Time = " << t << " (" << label(100*done) << "%)"
         << "  deltaT = " << dtNow
         << "  Co = " << dtNow*d.maxRate
@@ -599,6 +611,8 @@ void avalancheRun<Real>::logProgress(const bool final)
         << "  steps = " << solver_->steps()
         << "  maxSpeed = " << speed
         << "  movingVol = " << d.movingVolume
+        << (ac_.input.entraining() ? "  eroded = " : "")
+        << (ac_.input.entraining() ? eroded : "")
         << (final ? std::string("  end") : "  ETA "
           + eta_.text(t, double(solver_->steps()), dtNow, endTime_))
            .c_str()
