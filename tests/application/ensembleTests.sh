@@ -25,6 +25,18 @@
 #         Voellmy member byte for byte its single run;
 #       - samples: the same seed draws the same members, another seed
 #         others; parameters files hold what was drawn, within the ranges;
+#       - the bed's cover (docs/design.md section 7): on the plane with an
+#         erodible layer and a resistance patch (setAvalancheFields) and
+#         entrainmentModel constantRate, an ensemble of the rate (the
+#         keyword path constantRateCoeffs/rate) x cResistanceScale: every
+#         member's h, hU, hMax, UMax, tArrival, hEntrainable, erodedDepth
+#         and cResistance at t = 1 and 2 byte for byte its single run
+#         (its rate in transportProperties, 0/cResistance scaled by the
+#         test with the exact factors 0.5 and 2); report.dat's
+#         entrainedVolume of each member the sum of its erodedDepth dA
+#         and, in this closed box, releasedVolume + entrainedVolume =
+#         volume; the members differ where their parameters do; a
+#         restart of it at t = 1 byte for byte the run straight to 2;
 #       - foamToVTK -case ensemble/statistics and -case ensemble/member<k>
 #         (they are cases by links to constant/ and system/);
 #       - a terrain ensemble (terrainChute on 40 m cells): hazardMaps
@@ -62,20 +74,23 @@ cp -r "$project"/tutorials/ensemble/{0.orig,constant,system} "$base"/
     cp 0/h 0/h.large
 ) > "$work/base.log" 2>&1 || { cat "$work/base.log"; fail "setting up the base case (its log above)"; finish; exit 1; }
 
+#- newCase <name> [<from>]: a copy of the base case (or of the case
+#  <from>) as $work/<name>
 newCase()
 {
     rm -rf "$work/$1"
-    cp -r "$base" "$work/$1"
+    cp -r "${2:-$base}" "$work/$1"
     rm -f "$work/$1"/log.*
     echo "$work/$1"
 }
 
-#- differing <dir> <dir>: the fields of a single run's time directory that
-#  are missing from the first or differ from the second's ("" if none)
+#- differing <dir> <dir> [<fields>]: the fields (default h hU hMax UMax
+#  tArrival) of a single run's time directory that are missing from the
+#  first or differ from the second's ("" if none)
 differing()
 {
     local f bad=""
-    for f in h hU hMax UMax tArrival
+    for f in ${3:-h hU hMax UMax tArrival}
     do
         [ -f "$1/$f" ] && same "$1/$f" "$2/$f" || bad="$bad $f"
     done
@@ -414,6 +429,136 @@ else
     fail "samples: seed 11 twice gave different members, seed 12 the same, or delta out of range ($deltas)"
 fi
 
+# The bed's cover: a layer of 0.1 m across the track (x in [6, 12]) and a
+# resistance patch (x in [7, 14], |y| < 4) on the plane, constantRate;
+# the rate and cResistanceScale varied, every member against its single run
+coverBase="$(newCase coverBase)"
+(
+    cd "$coverBase" || exit 1
+    cat > system/setAvalancheFieldsDict.cover <<'DICT'
+FoamFile { version 2.0; format ascii; class dictionary; object setAvalancheFieldsDict; }
+h            ( hemisphere { centre (4 0); radius 1.85; } );
+hEntrainable ( box { min (6 -7); max (12 7); value 0.1; } );
+cResistance  ( box { min (7 -4); max (14 4); value 0.05; } );
+DICT
+    runApplication -s cover setAvalancheFields -dict system/setAvalancheFieldsDict.cover
+    foamDictionary constant/transportProperties -entry entrainmentModel -add constantRate
+    foamDictionary constant/transportProperties -entry constantRateCoeffs -add "{ rate 0.02; }"
+) > "$work/coverBase.log" 2>&1 || { cat "$work/coverBase.log"; fail "setting up the case with a cover (its log above)"; }
+cover="$(newCase cover "$coverBase")"
+ensembleDict "$cover" 'parameters
+{
+    "constantRateCoeffs/rate" (0.01 0.04);
+    cResistanceScale (0.5 2);
+}'
+(cd "$cover" && savageHutterFoam -ensemble -backend cpu > log.ensemble 2>&1)
+rc=$?
+if [ $rc -eq 0 ] && [ -f "$cover/ensemble/member0003/2/erodedDepth" ]
+then
+    pass "-ensemble with a cover: 4 members (constantRateCoeffs/rate x cResistanceScale) written with hEntrainable, erodedDepth, cResistance"
+else
+    tail -n 20 "$cover/log.ensemble"
+    fail "-ensemble with a cover (exit $rc; log above)"
+fi
+coverFields="h hU hMax UMax tArrival hEntrainable erodedDepth cResistance"
+for k in 0 1 2 3
+do
+    m="$(printf 'member%04d' "$k")"
+    par="$cover/ensemble/$m/parameters"
+    rate="$(foamDictionary "$par" -entry constantRateCoeffs/rate -value)"
+    scale="$(foamDictionary "$par" -entry cResistanceScale -value)"
+    one="$(newCase "coverSingle$k" "$coverBase")"
+    (
+        cd "$one" || exit 1
+        setEntry constant/transportProperties constantRateCoeffs/rate "$rate"
+        # 0/cResistance scaled (x 0.5 and x 2 are exact in binary)
+        python3 - "$scale" <<'PY'
+import re, sys, struct
+s = float(sys.argv[1])
+data = open("0/cResistance", "rb").read()
+m = re.search(rb"internalField\s+nonuniform\s+List<scalar>\s*(\d+)\s*\(", data)
+n = int(m.group(1))
+vals = struct.unpack_from("<%dd" % n, data, m.end())
+body = struct.pack("<%dd" % n, *[v * s for v in vals])
+open("0/cResistance", "wb").write(data[:m.end()] + body + data[m.end() + 8 * n:])
+PY
+        savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1
+    )
+    bad="$(differing "$one/1" "$cover/ensemble/$m/1" "$coverFields")$(differing "$one/2" "$cover/ensemble/$m/2" "$coverFields")"
+    if [ -z "$bad" ]
+    then
+        pass "cover member $k (rate $rate, cResistanceScale $scale): $coverFields at t = 1 and 2 byte for byte its single run"
+    else
+        fail "cover member $k (rate $rate, cResistanceScale $scale): differs from its single run in:$bad"
+    fi
+done
+out="$(/usr/bin/python3 - "$cover" <<'PY'
+import os, sys
+sys.path.insert(0, os.path.join(os.environ["SAVAGEHUTTER_DIR"], "tutorials", "tools"))
+import foamCase
+case = sys.argv[1]
+g = foamCase.Grid(case)
+ens = os.path.join(case, "ensemble")
+lines = [l for l in open(os.path.join(ens, "report.dat")) if l.strip()]
+head = [l for l in lines if l.startswith("# member")][0].split()[1:]
+rows = [dict(zip(head, l.split())) for l in lines if not l.startswith("#")]
+bad = []
+eroded = {}
+for r in rows:
+    k = int(r["member"])
+    e = foamCase.read_field(os.path.join(ens, "member%04d" % k), "2", "erodedDepth", g.n)
+    # cells of 0.5 x 0.5 m
+    want = float(sum(float(x) for x in e)) * 0.25
+    got = float(r["entrainedVolume"])
+    eroded[k] = got
+    if not (got > 0 and abs(got - want) <= 1e-9 * want):
+        bad.append("member %d: entrainedVolume %r, its erodedDepth sums to %r" % (k, got, want))
+    balance = float(r["releasedVolume"]) + got - float(r["volume"])
+    if abs(balance) > 1e-9 * float(r["volume"]):
+        bad.append("member %d: releasedVolume + entrainedVolume - volume = %g" % (k, balance))
+# The rate sets what is taken up; members 0, 1 (rate 0.01) below 2, 3 (0.04)
+if not (max(eroded[0], eroded[1]) < min(eroded[2], eroded[3])):
+    bad.append("entrained volumes %s do not grow with the rate" % eroded)
+# The resistance: members of one rate differ in their hMax
+h = [foamCase.read_field(os.path.join(ens, "member%04d" % k), "2", "hMax", g.n) for k in range(4)]
+if list(h[0]) == list(h[1]) or list(h[2]) == list(h[3]):
+    bad.append("cResistanceScale 0.5 and 2 give the same hMax")
+if bad:
+    print("FAIL  cover report: " + "; ".join(bad))
+else:
+    print("PASS  cover report: entrainedVolume of each member the sum of its erodedDepth dA (%s m^3), releasedVolume + entrainedVolume = volume (closed box) to 1e-9, more taken up at the higher rate, hMax differing with cResistanceScale" % ", ".join("%.6g" % eroded[k] for k in sorted(eroded)))
+PY
+)"
+tally $? "$out" "cover report"
+# A restart of it: to t = 1, then on to 2, each member's layer and eroded
+# depth read back as a single run's restart reads them
+coverRe="$(newCase coverRestart "$coverBase")"
+cp "$cover/system/ensembleDict" "$coverRe/system/"
+(
+    cd "$coverRe" || exit 1
+    setEntry system/controlDict endTime 1
+    savageHutterFoam -ensemble -backend cpu > log.first 2>&1 || exit 1
+    setEntry system/controlDict endTime 2
+    savageHutterFoam -ensemble -backend cpu > log.second 2>&1
+)
+rc=$?
+bad=""
+for d in "$cover"/ensemble/member* "$cover/ensemble/statistics"
+do
+    for f in "$d"/2/*
+    do
+        [ -f "$f" ] || continue
+        cmp -s "$f" "$coverRe/ensemble/$(basename "$d")/2/$(basename "$f")" || bad="$bad $(basename "$d")/$(basename "$f")"
+    done
+done
+cmp -s "$cover/ensemble/report.dat" "$coverRe/ensemble/report.dat" || bad="$bad report.dat"
+if [ $rc -eq 0 ] && grep -q "Restart of the ensemble from t = 1" "$coverRe/log.second" && [ -z "$bad" ]
+then
+    pass "cover restart: to t = 1, then on to 2: every member's files (hEntrainable, erodedDepth too), the statistics and report.dat byte for byte the run straight to 2"
+else
+    fail "cover restart (exit $rc): differs in:${bad:- (no restart line?)}"
+fi
+
 # A terrain case: hazardMaps -statistics writes the statistics as rasters
 ter="$work/terrain"
 cp -r "$project/tutorials/terrainChute" "$ter"
@@ -490,7 +635,7 @@ expectRejected()
     local name="$1" dict="$2"
     shift 2
     local d
-    d="$(newCase "bad$name")"
+    d="$(newCase "bad$name" "${rejectFrom:-$base}")"
     ensembleDict "$d" "$dict"
     (cd "$d" && savageHutterFoam -ensemble -backend cpu > log.ensemble 2>&1)
     local rc=$? problems="" p
@@ -535,6 +680,16 @@ expectRejected distributionWithCombine 'parameters { hScale uniform (1 2); }' \
 expectRejected badThreshold 'parameters { hScale (1 2); } thresholds (0.1 -1);' "thresholds"
 expectRejected sameThreshold 'parameters { hScale (1 2); } thresholds (0.1 0.1000000001);' "twice"
 expectRejected seedWithoutSamples 'parameters { hScale (1 2); } seed 3;' "seed without samples"
+expectRejected resistanceWithoutField 'parameters { cResistanceScale (0.5 2); }' \
+    "cResistanceScale" "does not have"
+expectRejected rateWithoutModel 'parameters { "constantRateCoeffs/rate" (0.01 0.02); }' \
+    "Unknown parameter 'constantRateCoeffs/rate'"
+rejectFrom="$coverBase"
+expectRejected negativeResistanceScale 'parameters { cResistanceScale (1 -0.5); }' \
+    "ensembleDict" "Member 1" "cResistanceScale -0.5" ">= 0"
+expectRejected negativeRate 'parameters { "constantRateCoeffs/rate" (0.02 -0.01); }' \
+    "ensembleDict" "Member 1" "not a valid case" "rate"
+unset rejectFrom
 rm -f "$base/system/ensembleDict.x"
 noDict="$(newCase noDict)"
 rm -f "$noDict/system/ensembleDict"

@@ -8,6 +8,7 @@
 #include "Tuple2.H"
 #include "DynamicList.H"
 #include "mathematicalConstants.H"
+#include "physics/entrainment.H"
 
 #include <algorithm>
 #include <cmath>
@@ -274,8 +275,9 @@ parameter readParameter
         FatalIOErrorInFunction(in)
             << "Unknown parameter '" << name << "'." << nl
             << "Valid parameters: " << flatOutput(allValid)
-            << " (the coefficients of the frictionModel selected in"
-            << " transportProperties)" << nl << exit(FatalIOError);
+            << " (the coefficients of the frictionModel and of the"
+            << " entrainmentModel selected in transportProperties)" << nl
+            << exit(FatalIOError);
     }
     parameter p;
     p.name = name;
@@ -422,6 +424,10 @@ void pickMember
         {
             m.hScale = value;
         }
+        else if (p.name == "cResistanceScale")
+        {
+            m.cResistanceScale = value;
+        }
         else
         {
             m.values[key++] = value;
@@ -479,9 +485,16 @@ ensembleInput::ensembleInput(const Time& runTime, const caseInput& input)
     mode = readMode(dict, sampled);
 
     // The parameters, in the order listed
-    const wordList valid = input.memberKeywords();
-    wordList allValid(valid);
+    wordList allValid(input.memberKeywords());
+    for (const word& key : entrainmentKeywords(input))
+    {
+        if (!allValid.found(key))
+        {
+            allValid.append(key);
+        }
+    }
     allValid.append("hScale");
+    allValid.append("cResistanceScale");
     allValid.append("release");
     List<parameter> params;
     wordList listed;
@@ -497,6 +510,10 @@ ensembleInput::ensembleInput(const Time& runTime, const caseInput& input)
         else if (p.name == "hScale")
         {
             variesHScale = true;
+        }
+        else if (p.name == "cResistanceScale")
+        {
+            variesCResistance = true;
         }
         else
         {
@@ -549,6 +566,27 @@ void ensembleInput::checkMember
             << m.hScale << " must be positive (at most 1e6)" << nl
             << exit(FatalIOError);
     }
+    if (variesCResistance)
+    {
+        if (!(m.cResistanceScale >= 0 && m.cResistanceScale <= 1e6))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Member " << k << " (" << describe(k).c_str() << "):"
+                << " cResistanceScale " << m.cResistanceScale
+                << " must be >= 0 (at most 1e6)" << nl
+                << exit(FatalIOError);
+        }
+        const fileName field = runTime.path()/runTime.timeName()/"cResistance";
+        if (!isFile(field))
+        {
+            FatalIOErrorInFunction(dict)
+                << "cResistanceScale: a factor on the resistance field "
+                << field << ", which the case does not have" << nl
+                << "Valid: cResistanceScale with a 0/cResistance (e.g. from"
+                << " setAvalancheFields or terrainToCase)" << nl
+                << exit(FatalIOError);
+        }
+    }
     if
     (
         !m.release.empty()
@@ -566,7 +604,7 @@ void ensembleInput::checkMember
     const bool throws = FatalError.throwExceptions();
     try
     {
-        input.memberModel(keys, m.values);
+        memberModel(input, k);
     }
     catch (const sh::InputError& e)
     {
@@ -651,6 +689,10 @@ dictionary ensembleInput::memberDict(const label k) const
         }
     }
     d.add("hScale", m.hScale);
+    if (variesCResistance)
+    {
+        d.add("cResistanceScale", m.cResistanceScale);
+    }
     if (!m.release.empty())
     {
         d.add("release", m.release);
@@ -672,11 +714,88 @@ string ensembleInput::describe(const label k) const
     {
         os << (keys.size() ? " " : "") << "hScale " << m.hScale;
     }
+    if (variesCResistance)
+    {
+        os << (keys.size() || variesHScale ? " " : "") << "cResistanceScale "
+            << m.cResistanceScale;
+    }
     if (variesRelease)
     {
         os << " release " << m.release;
     }
     return os.str();
+}
+
+
+wordList ensembleInput::entrainmentKeywords(const caseInput& input)
+{
+    wordList keys;
+    const sh::EntrainmentModel selected = input.model.entrainmentModel;
+    if (selected == sh::EntrainmentModel::NoEntrainment)
+    {
+        return keys;
+    }
+    sh::forEachEntrainmentModel([&](auto model)
+    {
+        using Model = decltype(model);
+        if (sh::entrainmentModelOf(model) == selected)
+        {
+            const word coeffs = word(Model::name) + "Coeffs";
+            for (const auto& c : Model::coefficients)
+            {
+                keys.append(coeffs + "/" + c.keyword);
+            }
+        }
+    });
+    return keys;
+}
+
+
+sh::ModelInput ensembleInput::memberModel
+(
+    const caseInput& input,
+    const label k
+) const
+{
+    const member& m = members[k];
+    const wordList entrainment = entrainmentKeywords(input);
+    wordList otherKeys;
+    scalarList otherValues;
+    forAll(keys, q)
+    {
+        if (!entrainment.found(keys[q]))
+        {
+            otherKeys.append(keys[q]);
+            otherValues.append(m.values[q]);
+        }
+    }
+    sh::ModelInput in = input.memberModel(otherKeys, otherValues);
+    if (otherKeys.size() == keys.size())
+    {
+        return in;
+    }
+    // The entrainment model's coefficients, by its coefficient table
+    const sh::EntrainmentModel selected = in.entrainmentModel;
+    sh::forEachEntrainmentModel([&](auto model)
+    {
+        using Model = decltype(model);
+        if (sh::entrainmentModelOf(model) != selected)
+        {
+            return;
+        }
+        const word coeffs = word(Model::name) + "Coeffs/";
+        for (const auto& c : Model::coefficients)
+        {
+            const label q = keys.find(coeffs + c.keyword);
+            if (q >= 0)
+            {
+                in.of(model).*(c.value) = m.values[q];
+            }
+        }
+    });
+    // What makeParams refuses (a negative rate, ...), as an InputError
+    sh::makeParams<double>(in);
+    return in;
 }
 
 } // End namespace Foam

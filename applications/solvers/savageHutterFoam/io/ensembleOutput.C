@@ -422,13 +422,25 @@ void ensembleRun<Real>::writeReport()
            ) << nl
         << "# units (the case's; m unless g says otherwise): releasedVolume, volume [m^3]; runoutX, runoutY,"
         << " runoutZ [m]; travelAngle [deg]; reachesBoundary 1 if a cell of"
-        << " the mesh's outermost ring has hMax > threshold, else 0" << nl
-        << "# member";
+        << " the mesh's outermost ring has hMax > threshold, else 0";
+    // With an entrainment model (the case's, every member's): the volume
+    // each member has taken up from its erodible layer, sum of its eroded
+    // depth dA (hazardMaps' entrainedVolume)
+    const bool entraining = pb0.params.entrainment.on();
+    if (entraining)
+    {
+        os  << "; entrainedVolume [m^3] the eroded depth's volume, so that"
+            << " releasedVolume + entrainedVolume = volume + what left"
+            << " through open sides";
+    }
+    os  << nl << "# member";
     for (const word& k : ens_.keys) { os << ' ' << k; }
     if (ens_.variesHScale) { os << " hScale"; }
+    if (ens_.variesCResistance) { os << " cResistanceScale"; }
     if (ens_.variesRelease) { os << " release"; }
     os  << " releasedVolume volume runoutX runoutY travelAngle steps"
-        << " runoutZ reachesBoundary" << nl;
+        << " runoutZ reachesBoundary" << (entraining ? " entrainedVolume" : "")
+        << nl;
     for (label k = 0; k < n_; ++k)
     {
         const sh::Problem<Real>& pb = problems_[k];
@@ -486,6 +498,7 @@ void ensembleRun<Real>::writeReport()
         const ensembleInput::member& m = ens_.members[k];
         for (const scalar v : m.values) { os << ' ' << v; }
         if (ens_.variesHScale) { os << ' ' << m.hScale; }
+        if (ens_.variesCResistance) { os << ' ' << m.cResistanceScale; }
         if (ens_.variesRelease) { os << ' ' << m.release; }
         // Volumes to 10 significant digits; the runout point and the
         // angle to the digits of hazardMaps' report (15 in plan
@@ -497,8 +510,17 @@ void ensembleRun<Real>::writeReport()
             << (moved ? r.point[1] : 0) << ' '
             << angle << ' ' << steps0_[k] + solver_->steps(k) << ' '
             << (moved ? r.point[2] : 0) << ' '
-            << (r.reachesBoundary ? 1 : 0) << nl;
+            << (r.reachesBoundary ? 1 : 0);
         os.precision(10);
+        if (entraining)
+        {
+            std::vector<Real> layer, eroded;
+            solver_->getCover(k, layer, eroded);
+            double taken = 0;
+            for (const Real e : eroded) { taken += double(e); }
+            os  << ' ' << taken*dx*dy;
+        }
+        os  << nl;
     }
     Info<< "Wrote " << os.name() << nl;
 }

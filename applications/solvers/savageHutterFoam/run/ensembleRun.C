@@ -94,6 +94,17 @@ scalar ensembleRun<Real>::readMember(const label k, const word& name)
             volVectorField(io("U"), mesh).primitiveField();
         ac_.hasVolume = true;
     }
+    if (ac_.hEntrainable.valid())
+    {
+        // The member's cover of that time (written with its state): the
+        // layer left and the depth taken up, as a single run's restart
+        // reads them
+        ac_.hEntrainable->primitiveFieldRef() =
+            volScalarField(io("hEntrainable"), mesh).primitiveField();
+        ac_.erodedDepth->primitiveFieldRef() =
+            volScalarField(io("erodedDepth"), mesh).primitiveField();
+        ac_.hasEroded = true;
+    }
     ac_.hasMomentum = true;
     ac_.hasPeaks = true;
     ac_.hasArrival = true;
@@ -124,10 +135,7 @@ sh::Problem<Real> ensembleRun<Real>::memberProblem
     const sh::JetParams<Real> jet = pb.params.jet;
     try
     {
-        pb.params = sh::makeParams<Real>
-        (
-            ac_.input.memberModel(ens_.keys, m.values)
-        );
+        pb.params = sh::makeParams<Real>(ens_.memberModel(ac_.input, k));
     }
     catch (const sh::InputError& e)
     {
@@ -136,9 +144,20 @@ sh::Problem<Real> ensembleRun<Real>::memberProblem
             << exit(FatalError);
     }
     pb.params.jet = jet;
+    if (ens_.variesCResistance)
+    {
+        // The member's resistance: the case's field times its factor, as
+        // its single run reads that product from its 0/cResistance (in
+        // the field's precision, then the problem's)
+        const scalarField c = memberResistance(k);
+        forAll(c, cell)
+        {
+            pb.cResistance[ac_.smesh.gridIndex(cell)] = Real(c[cell]);
+        }
+    }
     if (!fresh)
     {
-        // A restart: the base holds the member's state already
+        // A restart: the base holds the member's state (and cover) already
         return pb;
     }
     if (!m.release.empty())
@@ -211,9 +230,16 @@ void ensembleRun<Real>::makeViewable(const fileName& dir) const
 
 
 template<class Real>
+scalarField ensembleRun<Real>::memberResistance(const label k) const
+{
+    return cResistance0_*ens_.members[k].cResistanceScale;
+}
+
+
+template<class Real>
 void ensembleRun<Real>::writeMembers()
 {
-    std::vector<Real> h, hu, hv;
+    std::vector<Real> h, hu, hv, layer, eroded;
     for (label k = 0; k < n_; ++k)
     {
         solver_->getState(k, h, hu, hv);
@@ -224,6 +250,15 @@ void ensembleRun<Real>::writeMembers()
                 << "): the solution at t = " << solver_->time(k)
                 << " is not finite or has h < 0; nothing of this time"
                 << " is written for it" << nl << exit(FatalError);
+        }
+        // Its cover: the layer left and the depth taken up (with a
+        // model; else the fields as read), its resistance field
+        solver_->getCover(k, layer, eroded);
+        ac_.fillCover(layer, eroded);
+        if (ens_.variesCResistance)
+        {
+            ac_.cResistance->primitiveFieldRef() = memberResistance(k);
+            ac_.cResistance->correctBoundaryConditions();
         }
         runTime_.setTime(solver_->time(k), steps0_[k] + solver_->steps(k));
         writers_[k].write();
@@ -287,6 +322,11 @@ void ensembleRun<Real>::setUpMembers
     const word& restartName
 )
 {
+    if (ens_.variesCResistance)
+    {
+        // The case's resistance, which each member scales
+        cResistance0_ = ac_.cResistance->primitiveField();
+    }
     const sh::Problem<Real> base = ac_.problem<Real>();
     const bool restarted = tRestart >= 0;
     problems_.reserve(n_);
