@@ -37,9 +37,13 @@
 #          skipped, saying why, without mpirun or MPI);
 #       6. a terrain case in plan coordinates (testFunctions.sh
 #          planSlopeCase with an entrainment entry in terrainDict) run with
-#          constantRate, then hazardMaps: report.dat's entrainedVolume > 0
-#          and releasedVolume + entrainedVolume = depositVolume +
-#          outflowVolume to the rounding of the report's 10 digits.
+#          constantRate: a restart from 1 writes h, U, H, hU, hEntrainable,
+#          erodedDepth, HEntrainable and HErodedDepth at 2 and 3 byte for
+#          byte as the uninterrupted run; HEntrainable = J hEntrainable and
+#          HErodedDepth = J erodedDepth (J = H/h); then hazardMaps:
+#          report.dat's entrainedVolume > 0 and releasedVolume +
+#          entrainedVolume = depositVolume + outflowVolume to the rounding
+#          of the report's 10 digits.
 #
 # Usage
 #     entrainmentRunTests.sh <project dir> <work dir>
@@ -393,10 +397,55 @@ entrainmentModel constantRate;
 constantRateCoeffs { rate 0.2; }
 EOF
 if (cd "$pc" && terrainToCase > log.terrainToCase 2>&1 && blockMesh > log.blockMesh 2>&1) \
-    && foamDictionary -entry endTime -set 3 "$pc/system/controlDict" > /dev/null \
+    && setEntry "$pc/system/controlDict" endTime 3 \
+    && setEntry "$pc/system/controlDict" writeInterval 1 \
+    && setEntry "$pc/system/controlDict" writeFormat ascii \
+    && setEntry "$pc/system/controlDict" writePrecision 17 \
+    && setEntry "$pc/system/controlDict" startFrom latestTime \
+    && cp -r "$pc" "$work/planRestart" \
     && (cd "$pc" && savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1) \
     && (cd "$pc" && hazardMaps > log.hazardMaps 2>&1)
 then
+    # The restart: to 1, then from 1 to 3
+    pr="$work/planRestart"
+    setEntry "$pr/system/controlDict" endTime 1
+    (cd "$pr" && savageHutterFoam -backend cpu > log.first 2>&1) || fail "plan restart: the run to 1 (see $pr/log.first)"
+    setEntry "$pr/system/controlDict" endTime 3
+    (cd "$pr" && savageHutterFoam -backend cpu > log.restart 2>&1)
+    rc=$?
+    differ=""
+    for t in 2 3
+    do
+        for f in h U H hU hEntrainable erodedDepth HEntrainable HErodedDepth
+        do
+            cmp -s "$pc/$t/$f" "$pr/$t/$f" || differ="$differ $t/$f"
+        done
+    done
+    if [ $rc -eq 0 ] && [ -z "$differ" ] \
+        && grep -q "Reading fields HEntrainable and HErodedDepth" "$pr/log.restart"
+    then
+        pass "plan coordinates, restart from 1: h, U, H, hU, hEntrainable, erodedDepth, HEntrainable, HErodedDepth at 2 and 3 byte for byte the uninterrupted run's"
+    else
+        fail "plan coordinates, restart from 1: exit $rc, differ:${differ:- none} (see $pr/log.restart)"
+    fi
+    check "plan coordinates: HEntrainable = J hEntrainable, HErodedDepth = J erodedDepth (J = H/h where h > 0.01), erodedDepth = 0/hEntrainable - hEntrainable" '
+case, n = "'"$pc"'", 1260
+l0 = field(case, "0", "hEntrainable", n)
+worst, cells, lines = 0.0, 0, []
+for t in ["1", "2", "3"]:
+    h, H = field(case, t, "h", n), field(case, t, "H", n)
+    l, e = field(case, t, "hEntrainable", n), field(case, t, "erodedDepth", n)
+    L, E = field(case, t, "HEntrainable", n), field(case, t, "HErodedDepth", n)
+    for c in range(n):
+        worst = max(worst, abs(e[c] - (l0[c] - l[c])))
+        if h[c] > 0.01:
+            J = H[c]/h[c]
+            cells += 1
+            assert abs(L[c] - J*l[c]) <= 1e-12*max(l0) and abs(E[c] - J*e[c]) <= 1e-12*max(l0), (t, c)
+    lines.append("t = %s: eroded %.6g m (sum)" % (t, sum(e)))
+ok = worst <= 1e-12*max(l0) and cells > 0 and sum(e) > 0
+msg = "%d wet cells checked; largest |erodedDepth - (hEntrainable0 - hEntrainable)| %.3g m; %s" % (cells, worst, "; ".join(lines))'
+
     last="$(timeDirs "$pc" | tail -n1)"
     check "plan coordinates, hazardMaps at $last: releasedVolume + entrainedVolume = depositVolume + outflowVolume" '
 import math

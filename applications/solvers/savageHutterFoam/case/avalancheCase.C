@@ -157,6 +157,31 @@ avalancheCase::avalancheCase(Time& t, const fvMesh& m)
     hasEroded(hEntrainable.valid() && onAll(io(t, m, "erodedDepth",
         IOobject::MUST_READ).typeHeaderOk<volScalarField>(true),
         "erodedDepth")),
+    HEntrainable
+    (
+        input.plan() && hEntrainable.valid()
+      ? new volScalarField
+        (
+            io(t, m, "HEntrainable", IOobject::READ_IF_PRESENT), m,
+            dimensionedScalar(dimLength, Zero)
+        )
+      : nullptr
+    ),
+    HErodedDepth
+    (
+        HEntrainable.valid()
+      ? new volScalarField
+        (
+            io(t, m, "HErodedDepth", IOobject::READ_IF_PRESENT), m,
+            dimensionedScalar(dimLength, Zero)
+        )
+      : nullptr
+    ),
+    hasPlanCover(onAll(HEntrainable.valid() && hasEroded
+     && io(t, m, "HEntrainable", IOobject::MUST_READ)
+        .typeHeaderOk<volScalarField>(true)
+     && io(t, m, "HErodedDepth", IOobject::MUST_READ)
+        .typeHeaderOk<volScalarField>(true), "HEntrainable or HErodedDepth")),
     H
     (
         input.plan()
@@ -209,26 +234,80 @@ void avalancheCase::copyFields(sh::Problem<Real>& pb) const
 
 
 template<class Real>
-void avalancheCase::copyCover(sh::Problem<Real>& pb) const
+void avalancheCase::copyCover(sh::Problem<Real>& pb)
 {
     // Plan coordinates: the layer per plan area, J times the normal
-    // thickness, as H = J h (toPlanState has set planJ)
+    // thickness, as H = J h (toPlanState has set planJ); a restart's
+    // HEntrainable and HErodedDepth where they agree with it
     const bool plan = input.plan();
     if (hEntrainable.valid())
     {
+        const volScalarField& l = hEntrainable();
+        const volScalarField& e = erodedDepth();
+        if (hasPlanCover)
+        {
+            const auto differ = [](const scalar a, const scalar b)
+            {
+                return mag(a - b) > 1e-9*(mag(a) + mag(b)) + VSMALL;
+            };
+            label off = 0;
+            forAll(l, c)
+            {
+                off +=
+                    differ(HEntrainable()[c], planJ[c]*l[c])
+                 || differ(HErodedDepth()[c], planJ[c]*e[c]);
+            }
+            reduce(off, sumOp<label>());
+            if (off)
+            {
+                WarningInFunction
+                    << "HEntrainable or HErodedDepth disagrees with J"
+                    << " hEntrainable or J erodedDepth in " << off
+                    << " cells (hEntrainable or erodedDepth edited after"
+                    << " the write?): using J hEntrainable and J"
+                    << " erodedDepth" << nl << endl;
+                hasPlanCover = false;
+            }
+            else
+            {
+                Info<< "Reading fields HEntrainable and HErodedDepth: the"
+                    << " layer and the eroded depth per plan area, exact"
+                    << " for the restart" << nl;
+            }
+        }
         pb.hEntrainable.resize(h.size());
         pb.erodedDepth.resize(hasEroded ? h.size() : 0);
         forAll(h, c)
         {
             const label k = smesh.gridIndex(c);
+            if (hasPlanCover)
+            {
+                pb.hEntrainable[k] = Real(HEntrainable()[c]);
+                pb.erodedDepth[k] = Real(HErodedDepth()[c]);
+                continue;
+            }
+            // J as toPlanState forms H = J h
             const Real J = plan ? Real(planJ[c]) : Real(1);
-            pb.hEntrainable[k] = plan
-              ? Real(hEntrainable()[c])*J : Real(hEntrainable()[c]);
+            pb.hEntrainable[k] = plan ? Real(l[c])*J : Real(l[c]);
             if (hasEroded)
             {
-                pb.erodedDepth[k] = plan
-                  ? Real(erodedDepth()[c])*J : Real(erodedDepth()[c]);
+                pb.erodedDepth[k] = plan ? Real(e[c])*J : Real(e[c]);
             }
+        }
+        if (HEntrainable.valid() && !hasPlanCover)
+        {
+            // What the run starts from, written as such until an
+            // entrainment model changes it (fillCover)
+            scalarField& L = HEntrainable->primitiveFieldRef();
+            scalarField& E = HErodedDepth->primitiveFieldRef();
+            forAll(h, c)
+            {
+                const label k = smesh.gridIndex(c);
+                L[c] = pb.hEntrainable[k];
+                E[c] = hasEroded ? scalar(pb.erodedDepth[k]) : 0;
+            }
+            HEntrainable->correctBoundaryConditions();
+            HErodedDepth->correctBoundaryConditions();
         }
     }
     if (cResistance.valid())
@@ -259,16 +338,31 @@ void avalancheCase::fillCover
     scalar* lp = hEntrainable->primitiveFieldRef().data();
     scalar* ep = erodedDepth->primitiveFieldRef().data();
     const scalar* Jp = plan ? planJ.cdata() : nullptr;
+    scalar* Lp = plan ? HEntrainable->primitiveFieldRef().data() : nullptr;
+    scalar* Ep = plan ? HErodedDepth->primitiveFieldRef().data() : nullptr;
     #pragma omp parallel for schedule(static)
     for (label c = 0; c < n; ++c)
     {
         const label k = smesh.gridIndex(c);
-        // Plan coordinates: back to the thickness normal to the bed
-        lp[c] = plan ? scalar(layer[k])/Jp[c] : scalar(layer[k]);
-        ep[c] = plan ? scalar(eroded[k])/Jp[c] : scalar(eroded[k]);
+        lp[c] = layer[k];
+        ep[c] = eroded[k];
+        if (plan)
+        {
+            // The scheme's per plan area, and the thickness normal to
+            // the bed
+            Lp[c] = layer[k];
+            Ep[c] = eroded[k];
+            lp[c] = scalar(layer[k])/Jp[c];
+            ep[c] = scalar(eroded[k])/Jp[c];
+        }
     }
     hEntrainable->correctBoundaryConditions();
     erodedDepth->correctBoundaryConditions();
+    if (plan)
+    {
+        HEntrainable->correctBoundaryConditions();
+        HErodedDepth->correctBoundaryConditions();
+    }
 }
 
 
@@ -596,6 +690,11 @@ void avalancheCase::selectWrites(const bool restart)
         set(hEntrainable());
         set(erodedDepth());
     }
+    if (HEntrainable.valid())
+    {
+        set(HEntrainable());
+        set(HErodedDepth());
+    }
     if (cResistance.valid())
     {
         set(cResistance());
@@ -681,7 +780,7 @@ autoPtr<avalancheCase> readCase(Time& runTime, const fvMesh& mesh)
     template void avalancheCase::copyCover<Real>                              \
     (                                                                         \
         sh::Problem<Real>&                                                    \
-    ) const;                                                                  \
+    );                                                                        \
     template void avalancheCase::fillCover<Real>                              \
     (                                                                         \
         const std::vector<Real>&,                                             \

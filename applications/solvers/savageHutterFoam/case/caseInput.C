@@ -295,6 +295,17 @@ void caseInput::readTimeControl()
 }
 
 
+namespace
+{
+
+bool planCoverName(const word& name)
+{
+    return name == "HEntrainable" || name == "HErodedDepth";
+}
+
+} // namespace
+
+
 void caseInput::readFieldSelection()
 {
     const wordList& chosen = control.writeFields;
@@ -318,10 +329,12 @@ void caseInput::readFieldSelection()
     for (const word& name : controlSettings::writableFields())
     {
         const bool cover = name == "hEntrainable" || name == "erodedDepth";
+        const bool planCover = planCoverName(name);
         if
         (
             (name != "pMax" || model.rho > 0) && (name != "H" || plan())
          && (!cover || layer) && (name != "cResistance" || resistance)
+         && (!planCover || (layer && plan()))
         )
         {
             valid.append(name);
@@ -345,6 +358,11 @@ void caseInput::readFieldSelection()
                        " coordinates plan"
                      : name == "cResistance"
                      ? "no field cResistance in the start time"
+                     : planCoverName(name)
+                     ? "HEntrainable and HErodedDepth, the layer and the"
+                       " eroded depth per plan area, are written in"
+                       " coordinates plan with the field hEntrainable in"
+                       " the start time"
                      : "hEntrainable and erodedDepth need the field"
                        " hEntrainable in the start time"
                    ) << ")." << nl

@@ -96,6 +96,8 @@ void avalancheCase::checkStartFiles(const Time& t, const fvMesh& m)
     checkFile<volScalarField>(t, m, "hEntrainable", false);
     checkFile<volScalarField>(t, m, "erodedDepth", false);
     checkFile<volScalarField>(t, m, "cResistance", false);
+    checkFile<volScalarField>(t, m, "HEntrainable", false);
+    checkFile<volScalarField>(t, m, "HErodedDepth", false);
     for (const word name : {"time", "writeGrid"})
     {
         IOobject uio
@@ -466,7 +468,22 @@ void avalancheCase::checkCover() const
                 " negative"
             );
         }
-        else if (input.entraining() && runTime.value() > 0)
+        if (hasPlanCover)
+        {
+            nonNegative
+            (
+                HEntrainable(), dimLength, "m",
+                "the erodible layer left per plan area must be finite and"
+                " not negative"
+            );
+            nonNegative
+            (
+                HErodedDepth(), dimLength, "m",
+                "the eroded depth per plan area must be finite and not"
+                " negative"
+            );
+        }
+        if (!hasEroded && input.entraining() && runTime.value() > 0)
         {
             Info<< "No erodedDepth in " << now << ": the eroded depth"
                 << " is counted from " << now << nl;

@@ -393,7 +393,8 @@ const wordList& controlSettings::writableFields()
     static const wordList names
     ({
         "h", "U", "hU", "H", "zb", "regime", "hMax", "UMax", "pMax",
-        "tArrival", "hEntrainable", "erodedDepth", "cResistance"
+        "tArrival", "hEntrainable", "erodedDepth", "cResistance",
+        "HEntrainable", "HErodedDepth"
     });
     return names;
 }
@@ -404,7 +405,8 @@ const wordList& controlSettings::restartFields()
     static const wordList names
     ({
         "h", "U", "hU", "H", "zb", "hMax", "UMax", "pMax", "tArrival",
-        "hEntrainable", "erodedDepth", "cResistance"
+        "hEntrainable", "erodedDepth", "cResistance", "HEntrainable",
+        "HErodedDepth"
     });
     return names;
 }
