@@ -3,7 +3,8 @@
 
     Usage: gpuCompare damBreak|collapsingPile|lakeAtRest|inclinedPlane|
                       inflowPlane|granularJet|voellmyPile|openLake|
-                      outflowCorner|planBumpyDem|planFlatPile
+                      outflowCorner|planBumpyDem|planFlatPile|coverPile|
+                      planCoverPile|planCoverDem
 
     planBumpyDem and planFlatPile run in plan coordinates (physics/
     planScheme.H; the CUDA backend's PlanStages kernels), with the same
@@ -67,6 +68,21 @@
     returning after its wall-time budget (collapsingPile: a budget of 0 s,
     so one graph per call) and stableDt.
 
+    With the bed's cover (coverPile, planCoverPile, planCoverDem: an
+    erodible layer, a resistance patch and an entrainment model; each case
+    runs once for every model of physics/entrainmentModels/ but none, at
+    the coefficients of gpuCases.H smallScaleCover): also the layer left
+    and the eroded depth (Solver::getCover) bit-identical at every output
+    time in double (and in an IEEE float build), the diagnostics' layer
+    and eroded volumes identical, material taken up (eroded volume > 0 on
+    the GPU), the layer, eroded depth and h never negative, and, in the
+    closed cases (walls on every side), flowing + erodible volume
+    conserved on the GPU: relative change <= 1e-12 in double (the stage's
+    two additions per cell and step, each rounding by 1.1e-16 relative,
+    over a few thousand steps, and the volumes' sums; the CPU test
+    verification/entrainment.C holds its box to 1e-13), <= 1e-5 in float
+    (the same count of float roundings, 6e-8 each).
+
     Without a usable GPU (no CUDA in the build, no device) the test prints
     why and exits with 77, which CTest reports as skipped.
 \*---------------------------------------------------------------------------*/
@@ -124,6 +140,14 @@ struct Difference
                             //   0 if both zero, inf if only m_b is
     double maxHu = 0;       //!< max |hu|, |hv| of b (non-trivial)
 };
+
+//- Whether two arrays hold the same bits
+template<class Real>
+bool sameBits(const std::vector<Real>& a, const std::vector<Real>& b)
+{
+    return a.size() == b.size() && (a.empty()
+        || std::memcmp(a.data(), b.data(), a.size()*sizeof(Real)) == 0);
+}
 
 //- The problem with the initial h of every wet cell one ulp larger (and
 //  an impinging jet's thickness scale and speed)
@@ -219,6 +243,8 @@ std::vector<State> compareRun
             floatFloor);
     }
 
+    // The volumes before the first step, for the balance of the cover
+    const Diagnostics d0 = gpu->diagnostics();
     const Real dtCpu = cpu.stableDt();
     double fixedEnd = 0;
     const Real dtGpu = gpu->stableDt();
@@ -250,6 +276,14 @@ std::vector<State> compareRun
             "bound(h)", "e_gpu(m)", "e_ulp(m)", "bound(m)", "e_fd(h)",
             "e_fd(m)", "launches");
     }
+    const bool covered = pb.params.entrainment.on();
+    bool closed = true;
+    for (int side = 0; side < 4; ++side)
+    {
+        closed = closed && pb.bc.type[side] == BCType::wall;
+    }
+    bool coverSame = true, nonNegative = true;
+    double worstBalance = 0;
     bool allSame = true, clocksSame = true, moved = false, within = true;
     bool stepsClose = true, timesSame = true;
     double lastBoundH = 0;
@@ -273,6 +307,23 @@ std::vector<State> compareRun
         }
         cpuStates.push_back(state(cpu));
         const State a = state(*gpu);
+        if (covered)
+        {
+            std::vector<Real> lc, ec, lg, eg;
+            cpu.getCover(lc, ec);
+            gpu->getCover(lg, eg);
+            coverSame = coverSame && !lc.empty() && sameBits(lc, lg)
+                && sameBits(ec, eg);
+            for (std::size_t c = 0; c < lg.size(); ++c)
+            {
+                nonNegative = nonNegative && lg[c] >= 0 && eg[c] >= 0
+                    && a.q[0][c] >= 0;
+            }
+            const Diagnostics dn = gpu->diagnostics();
+            const double v0 = d0.volume + d0.layerVolume;
+            worstBalance = std::max(worstBalance,
+                std::fabs(dn.volume + dn.layerVolume - v0)/v0);
+        }
         const Difference d = difference(a, cpuStates.back());
         const std::string launches =
             wallChunks ? std::to_string(chunks) : "-";
@@ -393,6 +444,35 @@ std::vector<State> compareRun
         test.check(dv <= bh, prec + fmt(": volume within the bound of h "
             "(relative difference %.3e", dv) + fmt(" <= %.3e)", bh));
     }
+    if (covered)
+    {
+        const Diagnostics dn = gpu->diagnostics();
+        std::printf("cover on the GPU: layer %.9g -> %.9g, eroded %.9g, "
+            "flowing %.9g -> %.9g (volumes); worst relative change of "
+            "flowing + erodible %.3e%s\n", d0.layerVolume, dn.layerVolume,
+            dn.erodedVolume, d0.volume, dn.volume, worstBalance,
+            closed ? "" : " (open sides: not conserved)");
+        if (exact)
+        {
+            test.check(coverSame, prec + ": layer left and eroded depth "
+                "bit-identical at every output time");
+            test.check(dc.layerVolume == dg.layerVolume
+                && dc.erodedVolume == dg.erodedVolume, prec
+              + fmt(": layer and eroded volumes identical (%.17g", dg.layerVolume)
+              + fmt(", %.17g)", dg.erodedVolume));
+        }
+        test.check(dg.erodedVolume > 0, prec + fmt(": material taken up "
+            "(eroded volume %.4g > 0)", dg.erodedVolume));
+        test.check(nonNegative, prec + ": layer, eroded depth and h never "
+            "negative at the output times");
+        if (closed)
+        {
+            const double bound = dbl ? 1e-12 : 1e-5;
+            test.check(worstBalance <= bound, prec + fmt(": closed: flowing "
+                "+ erodible volume conserved (%.2e", worstBalance)
+              + fmt(" <= %g)", bound));
+        }
+    }
     gpuFinal = state(*gpu);
     return cpuStates;
 }
@@ -507,8 +587,46 @@ int main(int argc, char** argv)
         return run([](auto r) { return shcases::planFlatPile<decltype(r)>(64); },
             {0.1, 0.3, 0.6}, true, 0);
     }
+    if (which == "coverPile" || which == "planCoverPile" || which == "planCoverDem")
+    {
+        int failed = 0;
+        forEachEntrainmentModel([&](auto model)
+        {
+            using M = decltype(model);
+            const EntrainmentModel e = entrainmentModelOf(model);
+            if (e == EntrainmentModel::NoEntrainment)
+            {
+                return;
+            }
+            std::printf("\n==== entrainmentModel %s (shcases::smallScaleCover) ====\n",
+                M::name);
+            if (which == "coverPile")
+            {
+                std::printf("Collapsing pile in its bowl (walls) over an "
+                    "erodible ring, a resistance patch, 64x64, t = 2 s\n");
+                failed += run([e](auto r) { return shcases::coverPile<decltype(r)>(e, 64); },
+                    {0.1, 0.5, 1, 2}, true, 2);
+            }
+            else if (which == "planCoverPile")
+            {
+                std::printf("Plan coordinates: planFlatPile (walls) over an "
+                    "erodible ring, a resistance patch, 64x64, t = 0.6 s\n");
+                failed += run([e](auto r) { return shcases::planCoverPile<decltype(r)>(e, 64); },
+                    {0.1, 0.3, 0.6}, false, 2);
+            }
+            else
+            {
+                std::printf("Plan coordinates: planBumpyDem with an erodible "
+                    "run-out and a resistance patch, 97x41, t = 3 s\n");
+                failed += run([e](auto r) { return shcases::planCoverDem<decltype(r)>(e); },
+                    {0.5, 1.5, 3}, false, 3);
+            }
+        });
+        return failed ? 1 : 0;
+    }
     std::fprintf(stderr, "usage: gpuCompare damBreak|collapsingPile|"
         "lakeAtRest|inclinedPlane|inflowPlane|granularJet|voellmyPile|"
-        "openLake|outflowCorner|planBumpyDem|planFlatPile\n");
+        "openLake|outflowCorner|planBumpyDem|planFlatPile|coverPile|"
+        "planCoverPile|planCoverDem\n");
     return 2;
 }
