@@ -11,8 +11,9 @@ Description
     static resistance, stopping criterion and partial-wet cells (Zhai, Yuan,
     Liu, Zhang 2014).
 
-    The case is read here (mesh, fields h, U and optional zb,
-    transportProperties, fvSolution::savageHutter, controlDict); the run
+    The case is read here (mesh, fields h, U and optional zb, hEntrainable,
+    cResistance, transportProperties, fvSolution::savageHutter,
+    controlDict); the run
     happens in the solver core (src/savageHutter) on the CPU or the GPU.
     Time steps follow the CFL condition of eq. (24) with maxCo and hit the
     write times exactly.
@@ -24,7 +25,11 @@ Description
     (with rho in transportProperties), the largest rho |u|^2 [Pa], and
     tArrival, the first time h exceeded arrivalThreshold (-1 where never):
     updated every step, read back on restart, so that they cover the whole
-    simulation.
+    simulation.  With the bed's cover (docs/design.md section 7:
+    entrainmentModel in transportProperties, 0/hEntrainable, 0/cResistance)
+    also hEntrainable (the erodible layer left), erodedDepth (the depth
+    taken up so far) and cResistance, and in plan coordinates HEntrainable
+    and HErodedDepth (per plan area, for exact restarts).
 
     Every controlDict entry the run depends on is checked before Time reads
     it (controlSettings); time directories appear complete or not at all
