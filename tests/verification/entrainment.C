@@ -17,7 +17,10 @@ Description
        plane over an erodible layer of 0.2 m with a gap: sum (h + layer)
        dA conserved to round-off (relative 1e-13), layer >= 0, h >= 0,
        erodedVolume = the layer's loss; in slope coordinates and on the
-       plan grid (a tilted DEM, H = J h per plan area).
+       plan grid (a tilted DEM, H = J h per plan area); for every model
+       but none (constantRate 0.05 m/s; frontal phi_b 25 deg, where the
+       bed at 30 deg is unstable by itself and fails under the thin parts
+       of the flow; erosionEnergy e_b 100 J/kg).
     3. Resistance only (cResistance c, Coulomb delta 20 deg): the uniform
        layer from rest reaches the terminal speed u_t = sqrt(S/c) of
        du/dt = S - c u^2, u = u_t tanh(sqrt(S c) t); at t = 120 s equal to
@@ -26,6 +29,28 @@ Description
     4. Nothing changes without a model and resistance: a run given a
        layer with entrainmentModel none, and one given cResistance 0
        everywhere, write h, hu, hv bit for bit those of the plain run.
+    6. frontal (Medina et al. 2008) on a plane of 20 deg, bed phi_b 25
+       deg, cohesion c, a uniform layer h0 0.5 m, u0 10 m/s under Coulomb
+       delta 27 deg (decelerating, still moving after the 40 steps of
+       0.01 s): the bed fails to e = k h - c/D, k = g cos(zeta) (tan delta
+       - tan phi_b)/D, D = g (cos(zeta) tan phi_b - sin(zeta)), and the
+       cell takes up e - eroded each step, so the eroded depth after step
+       n is E_n = (k h0 - c/D)(1 - k^n)/(1 - k) (E_{n+1} = k (h0 + E_n) -
+       c/D): asserted to 1e-12 relative at every step, the first step's
+       E_1 = min(layer, e(h0)) with a thick and a thin layer.  On a plane
+       of 30 deg > phi_b (D < 0, delta 27) the layer's base decides: the
+       whole layer goes in the first step where N - D L >= 0 (L 0.5 m),
+       none where not (L 0.2 m), N = tau_b - c - tan(phi_b) g_n h0.
+    7. erosionEnergy (AvaFrame com1DFA) on the plane of 1., e_b 100 J/kg:
+       dh/dt = a h u, d(hu)/dt = S h, a = tan(delta) g cos(zeta)/e_b, so
+       h = h0 cosh(w t) + (a m0/w) sinh(w t), m = m0 cosh(w t) + (w h0/a)
+       sinh(w t), w = sqrt(a S).  The scheme takes up after the corrector:
+       m_{n+1} = m_n + S h_n dt, h_{n+1} = h_n + a m_{n+1} dt (symplectic
+       Euler), replayed here: h, hu equal it to 1e-12 relative at fixed
+       dt 0.01 s to t = 4 s; against the exact solution the error is
+       first order (halving dt divides it by 2, within [1.8, 2.2]) and
+       below 1e-2 relative.  The critical shear stress: nothing taken
+       where tau_b <= tau_c, tau_b |u| dt/e_b above.
     5. Bad input refused: a negative layer or resistance (InputError
        naming hEntrainable / cResistance), every model's edge cases
        (accepted or refused, naming the keyword), each model's worked
@@ -139,11 +164,8 @@ struct Balance
     double v0, v1, layerMin, hMin, erodedVol, layerLoss;
 };
 
-Balance boxRun(bool plan)
+Balance boxRun(ModelInput in, bool plan)
 {
-    ModelInput in = planeInput();
-    in.entrainmentModel = EntrainmentModel::ConstantRate;
-    in.constantRate.rate = 0.05;
     const double zeta = 30;
     if (plan)
     {
@@ -188,25 +210,42 @@ Balance boxRun(bool plan)
               *std::min_element(layer.begin(), layer.end()),
               *std::min_element(h.begin(), h.end()),
               d1.erodedVolume, d0.layerVolume - d1.layerVolume};
-    std::printf("  %-16s volume %.6f -> %.6f m^3, layer %.6f -> %.6f m^3, eroded %.6f m^3, steps %ld\n",
-        plan ? "plan grid" : "slope coordinates", d0.volume, d1.volume, d0.layerVolume,
+    std::printf("  %-13s %-17s volume %.6f -> %.6f m^3, layer %.6f -> %.6f m^3, eroded %.6f m^3, steps %ld\n",
+        toString(in.entrainmentModel).c_str(), plan ? "plan grid" : "slope coordinates", d0.volume, d1.volume, d0.layerVolume,
         d1.layerVolume, d1.erodedVolume, s.steps());
     return b;
 }
 
+//- The models' coefficients of the box run (2.)
+ModelInput boxInput(EntrainmentModel e)
+{
+    ModelInput in = planeInput();
+    in.entrainmentModel = e;
+    in.constantRate.rate = 0.05;
+    in.frontal.bedFrictionAngleDeg = 25;
+    in.erosionEnergy.erosionEnergy = 100;
+    return in;
+}
+
 void volumeBalance(Counter& test)
 {
-    std::printf("\n2. closed box, a cap over an erodible layer of 0.2 m, constantRate 0.05 m/s, t = 0..6 s\n");
-    for (bool plan : {false, true})
+    std::printf("\n2. closed box, a cap over an erodible layer of 0.2 m, t = 0..6 s\n");
+    forEachEntrainmentModel([&](auto model)
     {
-        const Balance b = boxRun(plan);
-        const std::string name = plan ? "2b. plan grid" : "2a. slope coordinates";
-        const double rel = std::fabs(b.v1 - b.v0)/b.v0;
-        test.check(rel <= 1e-13, name + say(": flowing + erodible volume conserved (relative change %.2e <= 1e-13)", rel));
-        test.check(b.layerMin >= 0 && b.hMin >= 0, name + ": layer and h never negative");
-        test.check(b.erodedVol > 0.1 && std::fabs(b.erodedVol - b.layerLoss) <= 1e-12*b.v0,
-            name + say(": material was entrained (%.4f m^3) and the eroded volume is the layer's loss", b.erodedVol));
-    }
+        const EntrainmentModel e = entrainmentModelOf(model);
+        if (e == EntrainmentModel::NoEntrainment) { return; }
+        for (bool plan : {false, true})
+        {
+            const Balance b = boxRun(boxInput(e), plan);
+            const std::string name = std::string(plan ? "2b. plan grid, " : "2a. slope coordinates, ")
+                + toString(e);
+            const double rel = std::fabs(b.v1 - b.v0)/b.v0;
+            test.check(rel <= 1e-13, name + say(": flowing + erodible volume conserved (relative change %.2e <= 1e-13)", rel));
+            test.check(b.layerMin >= 0 && b.hMin >= 0, name + ": layer and h never negative");
+            test.check(b.erodedVol > 0.1 && std::fabs(b.erodedVol - b.layerLoss) <= 1e-12*b.v0,
+                name + say(": material was entrained (%.4f m^3) and the eroded volume is the layer's loss", b.erodedVol));
+        }
+    });
 }
 
 void resistance(Counter& test)
@@ -318,12 +357,177 @@ void badInput(Counter& test)
                 mi.entrainmentModel = entrainmentModelOf(model);
                 return mi;
             }());
-            const EntrainmentState<double> st{x.h, x.speed, x.tauB, x.gn, x.cosTheta, x.eroded, x.dt};
+            const EntrainmentState<double> st{x.h, x.speed, x.tauB, x.gn, x.cosTheta, x.eroded, x.dt, x.layer};
             const double d = entrainmentDepth(p.entrainment, st);
             test.check(std::fabs(d - x.depth) <= 1e-12*std::max(1.0, std::fabs(x.depth)),
                 say("5. %s example (%s): depth %.6g, expected %.6g", M::name, x.what, d, x.depth));
         }
     });
+}
+
+//- The frontal model's first moving step on a uniform layer: the eroded
+//  depth of the cells after one step of dt (-1 if they differ)
+double frontalFirstStep(const ModelInput& in, double zeta, double h0, double u0, double layer)
+{
+    Problem<double> pb = uniformLayer(in, zeta, h0, u0);
+    pb.hEntrainable.assign(pb.nCells(), layer);
+    CpuSolver<double> s(pb, false);
+    s.step(0.01);
+    std::vector<double> l, e;
+    s.getCover(l, e);
+    for (double x : e)
+    {
+        if (x != e[0]) { return -1; }   // not uniform: fails every check
+    }
+    return e[0];
+}
+
+void frontal(Counter& test)
+{
+    const double zeta = 20, h0 = 0.5, u0 = 10, c = 0.05, dt = 0.01;
+    ModelInput in = planeInput();
+    in.coulomb.deltaDeg = 27;
+    in.entrainmentModel = EntrainmentModel::FrontalEntrainment;
+    in.frontal.bedFrictionAngleDeg = 25;
+    in.frontal.cohesion = c;
+    const double tp = std::tan(25*deg), cz = std::cos(zeta*deg), sz = std::sin(zeta*deg);
+    const double D = in.g*(cz*tp - sz);
+    const double k = in.g*cz*(std::tan(27*deg) - tp)/D;
+    const double e0 = k*h0 - c/D;
+    std::printf("\n6. frontal: zeta %g, phi_b 25, delta 27, cohesion %g m^2/s^2, h0 %g m, u0 %g m/s, dt %g s\n"
+        "   D = %.12f m/s^2, k = %.12f, e(h0) = %.12f m, E_inf = %.12f m\n",
+        zeta, c, h0, u0, dt, D, k, e0, e0/(1 - k));
+    Problem<double> pb = uniformLayer(in, zeta, h0, u0);
+    pb.hEntrainable.assign(pb.nCells(), 10.0);
+    CpuSolver<double> s(pb, false);
+    test.check(dt <= s.stableDt(), say("6. dt %g within the CFL step %g", dt, double(s.stableDt())));
+    std::printf("  %4s %16s %16s %10s %12s %10s\n", "n", "E_n", "closed form", "rel err", "h", "u");
+    bool ok = true, uniform = true, moving = true, volume = true;
+    double worst = 0;
+    for (int n = 1; n <= 40; ++n)
+    {
+        s.step(dt);
+        std::vector<double> h, hu, hv, layer, eroded;
+        s.getState(h, hu, hv);
+        s.getCover(layer, eroded);
+        for (std::size_t i = 0; i < h.size(); ++i)
+        {
+            uniform = uniform && h[i] == h[0] && eroded[i] == eroded[0] && hv[i] == 0;
+        }
+        const double En = e0*(1 - std::pow(k, n))/(1 - k);
+        const double rel = std::fabs(eroded[0] - En)/En;
+        worst = std::max(worst, rel);
+        ok = ok && rel <= 1e-12;
+        moving = moving && hu[0] > 0;
+        volume = volume && std::fabs(h[0] + layer[0] - (h0 + 10.0)) <= 1e-13*(h0 + 10.0);
+        if (n <= 5 || n % 10 == 0)
+        {
+            std::printf("  %4d %16.12f %16.12f %10.2e %12.9f %10.6f\n", n, eroded[0], En, rel, h[0], hu[0]/h[0]);
+        }
+    }
+    test.check(uniform, "6. the layer stays uniform to the bit");
+    test.check(moving, "6. the layer still moves after 40 steps (the model is asked every step)");
+    test.check(ok, say("6. eroded depth E_n = (k h0 - c/D)(1 - k^n)/(1 - k) at every step (worst relative error %.2e <= 1e-12)", worst));
+    test.check(volume, "6. h + layer = h0 + 10 m in every step (1e-13 relative)");
+
+    const double thick = frontalFirstStep(in, zeta, h0, u0, 10.0);
+    const double thin = frontalFirstStep(in, zeta, h0, u0, 0.05);
+    std::printf("  first step: layer 10 m -> %.15f m (e(h0) %.15f), layer 0.05 m -> %.15f m\n", thick, e0, thin);
+    test.check(std::fabs(thick - e0) <= 1e-12*e0, "6. first step on a thick layer takes up e(h0) = k h0 - c/D");
+    test.check(thin == 0.05, "6. first step on a layer thinner than e(h0) takes up the whole layer, exactly");
+
+    // The bed steeper than phi_b (D < 0): its base decides.  Cohesion 0.5
+    // m^2/s^2: N = g_n h0 (tan delta - tan phi_b) - c < 0, so a thin layer
+    // holds and a thick one fails at its base
+    ModelInput steep = in;
+    steep.frontal.cohesion = 0.5;
+    const double z2 = 30, c2 = std::cos(z2*deg), s2 = std::sin(z2*deg);
+    const double D2 = in.g*(c2*tp - s2);
+    const double N2 = in.g*c2*h0*(std::tan(27*deg) - tp) - 0.5;
+    std::printf("  zeta 30: D = %.6f m/s^2, N = %.6f m^2/s^2, N - D L: L 0.2 m %.6f, L 0.5 m %.6f\n",
+        D2, N2, N2 - D2*0.2, N2 - D2*0.5);
+    const double held = frontalFirstStep(steep, z2, h0, u0, 0.2);
+    const double failed = frontalFirstStep(steep, z2, h0, u0, 0.5);
+    test.check(D2 < 0 && N2 - D2*0.2 < 0 && N2 - D2*0.5 > 0, "6. the steep case's signs are as designed (D < 0, L 0.2 holds, L 0.5 fails)");
+    test.check(held == 0, say("6. zeta 30 > phi_b, layer 0.2 m: its base holds, nothing taken (%g)", held));
+    test.check(failed == 0.5, say("6. zeta 30 > phi_b, layer 0.5 m: its base fails, all of it taken (%g)", failed));
+}
+
+//- The erosionEnergy run at fixed dt to t = 4 s: h, hu of the (uniform)
+//  layer, the symplectic Euler replay and the exact solution
+struct EnergyRun
+{
+    double h, m, hReplay, mReplay, hExact, mExact;
+    bool uniform;
+};
+
+EnergyRun energyRun(double dt)
+{
+    const double zeta = 30, h0 = 0.5, u0 = 2, eb = 100, t = 4;
+    ModelInput in = planeInput();
+    in.entrainmentModel = EntrainmentModel::ErosionEnergy;
+    in.erosionEnergy.erosionEnergy = eb;
+    Problem<double> pb = uniformLayer(in, zeta, h0, u0);
+    pb.hEntrainable.assign(pb.nCells(), 10.0);
+    CpuSolver<double> s(pb, false);
+    const int n = int(std::lround(t/dt));
+    const double mu = std::tan(in.coulomb.deltaDeg*deg), gn = in.g*std::cos(zeta*deg);
+    const double S = slopeAcceleration(in, zeta), a = mu*gn/eb, w = std::sqrt(a*S);
+    double h = h0, m = h0*u0;
+    for (int i = 0; i < n; ++i)
+    {
+        s.step(dt);
+        m += S*h*dt;
+        h += (mu*h*gn)*(m/h)*dt/eb;
+    }
+    std::vector<double> hs, hu, hv;
+    s.getState(hs, hu, hv);
+    bool uniform = true;
+    for (std::size_t c = 0; c < hs.size(); ++c)
+    {
+        uniform = uniform && hs[c] == hs[0] && hu[c] == hu[0] && hv[c] == 0;
+    }
+    const double m0 = h0*u0;
+    return {hs[0], hu[0], h, m, h0*std::cosh(w*t) + a*m0/w*std::sinh(w*t),
+            m0*std::cosh(w*t) + w*h0/a*std::sinh(w*t), uniform};
+}
+
+void erosionEnergy(Counter& test)
+{
+    std::printf("\n7. erosionEnergy e_b 100 J/kg, zeta 30, delta 20, h0 0.5 m, u0 2 m/s, to t = 4 s\n");
+    std::printf("  %8s %14s %14s %14s %10s %14s %14s %10s %10s %10s\n", "dt", "h", "h replay", "h exact",
+        "err h", "hu", "hu replay", "hu exact", "err hu", "|replay|");
+    double errH[2], errM[2];
+    bool replay = true, uniform = true;
+    const double dts[2] = {0.01, 0.005};
+    for (int i = 0; i < 2; ++i)
+    {
+        const EnergyRun r = energyRun(dts[i]);
+        errH[i] = std::fabs(r.h - r.hExact)/r.hExact;
+        errM[i] = std::fabs(r.m - r.mExact)/r.mExact;
+        const double rep = std::max(std::fabs(r.h - r.hReplay)/r.hReplay, std::fabs(r.m - r.mReplay)/r.mReplay);
+        std::printf("  %8g %14.10f %14.10f %14.10f %10.2e %14.10f %14.10f %10.6f %10.2e %10.2e\n", dts[i], r.h,
+            r.hReplay, r.hExact, errH[i], r.m, r.mReplay, r.mExact, errM[i], rep);
+        replay = replay && rep <= 1e-12;
+        uniform = uniform && r.uniform;
+    }
+    test.check(uniform, "7. the layer stays uniform to the bit");
+    test.check(replay, "7. h, hu equal the replayed m += S h dt, h += a m dt to 1e-12 relative");
+    test.check(errH[0] < 1e-2 && errM[0] < 1e-2 && errH[0] > 0,
+        say("7. within 1e-2 of the exact cosh/sinh solution at dt 0.01 (h %.2e, hu %.2e)", errH[0], errM[0]));
+    const double rh = errH[0]/errH[1], rm = errM[0]/errM[1];
+    test.check(rh >= 1.8 && rh <= 2.2 && rm >= 1.8 && rm <= 2.2,
+        say("7. first order: halving dt divides the error by %.3f (h), %.3f (hu), within [1.8, 2.2]", rh, rm));
+
+    // The threshold, on the model itself
+    ErosionEnergy::Input ei;
+    ei.erosionEnergy = 100;
+    ei.tauCritical = 2;
+    const auto p = ErosionEnergy::params<double>(ei, EntrainmentContext{9.81, 1});
+    const auto at = [&](double tau) { return ErosionEnergy::depth(p, EntrainmentState<double>{1, 4, tau, 9, 1, 0, 0.5, 1}); };
+    std::printf("  tauCritical 2: depth at tau_b 1.5, 2, 2.5 m^2/s^2 (|u| 4 m/s, dt 0.5 s): %g %g %g\n", at(1.5), at(2), at(2.5));
+    test.check(at(1.5) == 0 && at(2) == 0 && at(2.5) == 2.5*4*0.5/100,
+        "7. tauCritical: nothing where tau_b <= tau_c, tau_b |u| dt/e_b above");
 }
 
 } // namespace
@@ -336,5 +540,7 @@ int main()
     resistance(test);
     unchanged(test);
     badInput(test);
+    frontal(test);
+    erosionEnergy(test);
     return test.finish();
 }
