@@ -421,7 +421,15 @@ void avalancheCase::checkCover() const
             << "Write it with setAvalancheFields (hEntrainable in"
             << " system/setAvalancheFieldsDict) or terrainToCase (an"
             << " entrainment entry in system/terrainDict), or set"
-            << " entrainmentModel none" << nl << exit(FatalIOError);
+            << " entrainmentModel none";
+        if (runTime.value() > 0)
+        {
+            // A later time: written without the layer (by a run without
+            // it, or with writeFields between restart times)
+            FatalIOError
+                << "; or restart from a time that holds hEntrainable";
+        }
+        FatalIOError << nl << exit(FatalIOError);
     }
     if (!hEntrainable.valid() && isFile(runTime.timePath()/"erodedDepth"))
     {
