@@ -21,7 +21,8 @@
 #          others at the last time;
 #       2. entrainmentModel none with the layer and cResistance 0
 #          everywhere writes h and U byte for byte as the case without
-#          either, and hEntrainable as it was given;
+#          either, and hEntrainable as it was given; a cResistance of
+#          0.3 1/m on the lower half of the slope slows the flow there;
 #       3. refusals (non-zero exit, the file and the keyword named, no time
 #          directory written): a negative rate, an unknown model, an unknown
 #          keyword in constantRateCoeffs, constantRateCoeffs missing, a
@@ -29,10 +30,11 @@
 #          0/hEntrainable, writeFields naming hEntrainable in a case
 #          without the layer;
 #       4. a restart from 0.5 (startFrom latestTime) writes h, U,
-#          hEntrainable and erodedDepth at 0.75 and 1 byte for byte as the
-#          uninterrupted run;
+#          hEntrainable, erodedDepth and cResistance at 0.75 and 1 byte for
+#          byte as the uninterrupted run;
 #       5. decomposed into 2 (simple 2 1), mpirun -parallel, reconstructPar:
-#          every processor's h, U, hU, hEntrainable and erodedDepth and the
+#          every processor's h, U, hU, hEntrainable, erodedDepth and
+#          cResistance and the
 #          reconstructed ones the serial run's (bin/tools/compareDecomposed;
 #          skipped, saying why, without mpirun or MPI);
 #       6. a terrain case in plan coordinates (testFunctions.sh
@@ -156,12 +158,43 @@ model()
     printf '%s\n' "$2" >> "$1/constant/transportProperties"
 }
 
+#- resistance <case> <value>: 0/cResistance, <value> 1/m in the cells of
+#  the lower half of the slope (x > 0), 0 elsewhere
+resistance()
+{
+    python3 - "$1/0/cResistance" "$2" <<'PYEOF'
+import sys
+values = ["%s" % (sys.argv[2] if -12.8 + (k % 32 + 0.5)*0.8 > 0 else "0") for k in range(256)]
+open(sys.argv[1], "w").write("""FoamFile { version 2.0; format ascii; class volScalarField; object cResistance; }
+dimensions      [0 -1 0 0 0 0 0];
+internalField   nonuniform List<scalar> 256 (%s);
+boundaryField
+{
+    upslope      { type zeroGradient; }
+    downslope    { type zeroGradient; }
+    sides        { type zeroGradient; }
+    frontAndBack { type empty; }
+}
+""" % " ".join(values))
+PYEOF
+}
+
+#- entrainCase <name>: the case of check 1 (constantRate 0.1 m/s and a
+#  resistance of 0.3 1/m on the lower half)
+entrainCase()
+{
+    local dir
+    dir="$(newCase "$1")"
+    model "$dir" "entrainmentModel constantRate;
+constantRateCoeffs { rate 0.1; }"
+    resistance "$dir" 0.3
+    echo "$dir"
+}
+
 times="0.25 0.5 0.75 1"
 
 # -- 1. the run ---------------------------------------------------------------
-ent="$(newCase entrain)"
-model "$ent" "entrainmentModel constantRate;
-constantRateCoeffs { rate 0.1; }"
+ent="$(entrainCase entrain)"
 (cd "$ent" && savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1)
 rc=$?
 written="$(timeDirs "$ent" | tr '\n' ' ')"
@@ -268,6 +301,28 @@ bad = [t for t in "'"$times"'".split()
 ok = not bad and max(l0) > 0
 msg = "differ at: %s" % bad if bad else "at every write time"'
 
+# The resistance acts: with it alone the flow is slower than the plain run's
+res="$(newCase resistanceOnly)"
+rm -f "$res/0/hEntrainable"
+resistance "$res" 0.3
+(cd "$res" && savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1) \
+    || fail "the run with cResistance alone (see $res/log.savageHutterFoam)"
+check "cResistance 0.3 1/m on the lower half: the flow there slower than without it, the upper half unchanged at t = 0.25" '
+import re
+def speeds(case, t):
+    s = text(case, t, "U")
+    m = re.search(r"internalField\s+nonuniform\s+List<vector>\s*\d+\s*\((.*?)\)\s*;", s, re.S)
+    return [float(v[0]) for v in re.findall(r"\(([^ ()]+) ([^ ()]+) ([^ ()]+)\)", m.group(1))]
+lower = lambda k: -12.8 + (k % 32 + 0.5)*0.8 > 0
+p1, r1 = speeds("'"$plain"'", "1"), speeds("'"$res"'", "1")
+hp, hr = field("'"$plain"'", "1", "h", 256), field("'"$res"'", "1", "h", 256)
+mp = sum(hp[k]*p1[k] for k in range(256) if lower(k))/sum(hp[k] for k in range(256) if lower(k))
+mr = sum(hr[k]*r1[k] for k in range(256) if lower(k))/sum(hr[k] for k in range(256) if lower(k))
+p0, r0 = speeds("'"$plain"'", "0.25"), speeds("'"$res"'", "0.25")
+upperSame = all(p0[k] == r0[k] for k in range(256) if -12.8 + (k % 32 + 0.5)*0.8 < -4)
+ok = mr < mp and upperSame
+msg = "mean downslope speed on the lower half at t = 1: %.6g m/s with it, %.6g without; upper cells (x < -4) identical at 0.25: %s" % (mr, mp, upperSame)'
+
 # -- 3. refusals --------------------------------------------------------------
 r="$(newCase negativeRate)"
 model "$r" "entrainmentModel constantRate;
@@ -319,9 +374,7 @@ refused "$r" "writeFields (h U hEntrainable) without the layer" "system/controlD
     "names hEntrainable, which this case does not have"
 
 # -- 4. restart from 0.5 ------------------------------------------------------
-rs="$(newCase restart)"
-model "$rs" "entrainmentModel constantRate;
-constantRateCoeffs { rate 0.1; }"
+rs="$(entrainCase restart)"
 setEntry "$rs/system/controlDict" endTime 0.5
 (cd "$rs" && savageHutterFoam -backend cpu > log.first 2>&1) || fail "restart: the run to 0.5 (see $rs/log.first)"
 setEntry "$rs/system/controlDict" endTime 1
@@ -330,14 +383,14 @@ rc=$?
 differ=""
 for t in 0.75 1
 do
-    for f in h U hEntrainable erodedDepth
+    for f in h U hEntrainable erodedDepth cResistance
     do
         cmp -s "$ent/$t/$f" "$rs/$t/$f" || differ="$differ $t/$f"
     done
 done
 if [ $rc -eq 0 ] && [ -z "$differ" ] && grep -q "Reading field erodedDepth" "$rs/log.restart"
 then
-    pass "restart from 0.5: h, U, hEntrainable, erodedDepth at 0.75 and 1 byte for byte the uninterrupted run's"
+    pass "restart from 0.5: h, U, hEntrainable, erodedDepth, cResistance at 0.75 and 1 byte for byte the uninterrupted run's"
 else
     fail "restart from 0.5: exit $rc, differ:${differ:- none} (see $rs/log.restart)"
 fi
@@ -348,9 +401,7 @@ then
     skip "decomposed run: no mpirun (bin/installDependencies installs openmpi-bin)"
 else
     export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-    par="$(newCase decomposed)"
-    model "$par" "entrainmentModel constantRate;
-constantRateCoeffs { rate 0.1; }"
+    par="$(entrainCase decomposed)"
     cat > "$par/system/decomposeParDict" <<'EOF'
 FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }
 numberOfSubdomains 2;
@@ -373,7 +424,7 @@ EOF
         fail "decomposed run: step $rc of decomposePar, mpirun, reconstructPar failed (see $par/log.*)"
     else
         out="$(python3 "$project/bin/tools/compareDecomposed" "decomposed (2 1 1)" \
-            "$ent" "$par" "$times" "h U hU hEntrainable erodedDepth" 2>&1)"
+            "$ent" "$par" "$times" "h U hU hEntrainable erodedDepth cResistance" 2>&1)"
         tally $? "$out" "decomposed (2 1 1)"
     fi
 fi
