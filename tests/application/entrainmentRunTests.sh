@@ -18,7 +18,9 @@
 #          (relative), erodedDepth = 0/hEntrainable - hEntrainable cell by
 #          cell to 1e-12 of the layer, h and hEntrainable >= 0; something
 #          taken up, the layer used up in some cells and partly left in
-#          others at the last time;
+#          others at the last time; the same for every other model of
+#          -listEntrainmentModels at the defaults of its required
+#          coefficients (and something taken up);
 #       2. entrainmentModel none with the layer and cResistance 0
 #          everywhere writes h and U byte for byte as the case without
 #          either, and hEntrainable as it was given; a cResistance of
@@ -255,6 +257,42 @@ partly = sum(1 for c in range(n) if 0 < l[c] < l0[c])
 ok = worst <= 1e-12*scale and not negative and usedUp > 0 and partly > 0
 msg = "largest difference %.3g m; at t = 1 the layer used up in %d cells, partly left in %d, eroded %.6g m^3 in all%s" % (
     worst, usedUp, partly, sum(e)*0.32, "; negative: " + "; ".join(negative) if negative else "")'
+
+# Every other model of the list (savageHutterFoam -listEntrainmentModels) at
+# the defaults of its required coefficients: the same balance and eroded
+# depth, and something taken up
+savageHutterFoam -listEntrainmentModels > "$work/models.txt" 2>&1
+others="$(awk '$1 == "entrainmentModel" && $2 != "none" && $2 != "constantRate" {print $2}' "$work/models.txt")"
+for m in $others
+do
+    coeffs="$(awk -v m="$m" '$1 == "entrainmentModel" {on = ($2 == m)}
+        on && $1 == "coefficient" && $4 == "required" {printf " %s %s;", $2, $3}' "$work/models.txt")"
+    dir="$(entrainCase "model-$m")"
+    sed -i '/^entrainmentModel\|^constantRateCoeffs/d' "$dir/constant/transportProperties"
+    model "$dir" "entrainmentModel $m;
+${m}Coeffs {$coeffs }"
+    (cd "$dir" && savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1)
+    rc=$?
+    if [ $rc -ne 0 ] || [ ! -f "$dir/1/erodedDepth" ]
+    then
+        fail "entrainmentModel $m {$coeffs }: exit $rc, no 1/erodedDepth (see $dir/log.savageHutterFoam)"
+        continue
+    fi
+    check "entrainmentModel $m {$coeffs }: the balance to 1e-12, erodedDepth = 0/hEntrainable - hEntrainable, h and the layer >= 0, something taken up" '
+case, n, A = "'"$dir"'", 256, 0.32
+h0, l0 = field(case, "0", "h", n), field(case, "0", "hEntrainable", n)
+v0 = sum(a + b for a, b in zip(h0, l0))*A
+rel, worst, low, eroded = 0.0, 0.0, 0.0, 0.0
+for t in "'"$times"'".split():
+    h, l, e = field(case, t, "h", n), field(case, t, "hEntrainable", n), field(case, t, "erodedDepth", n)
+    rel = max(rel, abs(sum(a + b for a, b in zip(h, l))*A - v0)/v0)
+    worst = max(worst, max(abs(e[c] - (l0[c] - l[c])) for c in range(n)))
+    low = min(low, min(h), min(l), min(e))
+    eroded = sum(e)*A
+ok = rel <= 1e-12 and worst <= 1e-12*max(l0) and low >= 0 and eroded > 0
+msg = "relative balance %.2g, erodedDepth off by %.2g m, smallest value %g, eroded %.6g m^3 at t = 1" % (rel, worst, low, eroded)'
+done
+[ -n "$others" ] || echo "(no entrainment model besides none and constantRate in the list)"
 
 # -- 2. none with a layer and cResistance 0: the plain run, byte for byte -----
 plain="$(newCase plain)"
