@@ -36,7 +36,9 @@
 #         entrainedVolume of each member the sum of its erodedDepth dA
 #         and, in this closed box, releasedVolume + entrainedVolume =
 #         volume; the members differ where their parameters do; a
-#         restart of it at t = 1 byte for byte the run straight to 2;
+#         restart of it at t = 1 byte for byte the run straight to 2; in
+#         plan coordinates (an erodible bed on planSlopeCase, two rates)
+#         the restart exact, HEntrainable and HErodedDepth too;
 #       - foamToVTK -case ensemble/statistics and -case ensemble/member<k>
 #         (they are cases by links to constant/ and system/);
 #       - a terrain ensemble (terrainChute on 40 m cells): hazardMaps
@@ -557,6 +559,67 @@ then
     pass "cover restart: to t = 1, then on to 2: every member's files (hEntrainable, erodedDepth too), the statistics and report.dat byte for byte the run straight to 2"
 else
     fail "cover restart (exit $rc): differs in:${bad:- (no restart line?)}"
+fi
+
+# The cover in plan coordinates (testFunctions.sh planSlopeCase with an
+# erodible bed, constantRate): two rates; the ensemble restarted at t = 1
+# byte for byte the run straight to 2 (each member's layer and eroded
+# depth per plan area read back, as HEntrainable and HErodedDepth).  Not
+# against single runs: a single run in plan coordinates also stops at
+# the samples of its centre of mass (avalancheRun comInterval), which
+# changes its steps, and an ensemble member does not
+pcov="$work/planCover"
+planSlopeCase "$pcov" 500 800 0
+cat >> "$pcov/system/terrainDict" <<'DICT'
+entrainment
+{
+    bed
+    {
+        polygon     ((550 810) (660 810) (660 910) (550 910));
+        thickness   0.3;
+        thicknessDirection vertical;
+    }
+}
+DICT
+cat >> "$pcov/constant/transportProperties" <<'DICT'
+entrainmentModel constantRate;
+constantRateCoeffs { rate 0.2; }
+DICT
+planFields="h U H hU hEntrainable erodedDepth HEntrainable HErodedDepth"
+if (cd "$pcov" && terrainToCase > log.terrainToCase 2>&1 && blockMesh > log.blockMesh 2>&1) \
+    && setEntry "$pcov/system/controlDict" endTime 2 \
+    && setEntry "$pcov/system/controlDict" writeInterval 1 \
+    && setEntry "$pcov/system/controlDict" startFrom latestTime \
+    && ensembleDict "$pcov" 'parameters { "constantRateCoeffs/rate" (0.1 0.3); }' \
+    && cp -r "$pcov" "$work/planCoverRestart" \
+    && (cd "$pcov" && savageHutterFoam -ensemble -backend cpu > log.ensemble 2>&1)
+then
+    pre="$work/planCoverRestart"
+    (
+        cd "$pre" || exit 1
+        setEntry system/controlDict endTime 1
+        savageHutterFoam -ensemble -backend cpu > log.first 2>&1 || exit 1
+        setEntry system/controlDict endTime 2
+        savageHutterFoam -ensemble -backend cpu > log.second 2>&1
+    )
+    rc=$?
+    bad=""
+    for k in 0 1
+    do
+        m="$(printf 'member%04d' "$k")"
+        for f in $planFields
+        do
+            cmp -s "$pcov/ensemble/$m/2/$f" "$pre/ensemble/$m/2/$f" || bad="$bad $m/$f"
+        done
+    done
+    if [ $rc -eq 0 ] && grep -q "Restart of the ensemble from t = 1" "$pre/log.second" && [ -z "$bad" ]
+    then
+        pass "plan coordinates with a cover: the ensemble restarted at t = 1: both members' $planFields at t = 2 byte for byte the run straight to 2"
+    else
+        fail "plan coordinates with a cover, restart (exit $rc): differs in:${bad:- (no restart line?)}"
+    fi
+else
+    fail "plan coordinates with a cover: terrainToCase, blockMesh or -ensemble failed (see $pcov/log.*)"
 fi
 
 # A terrain case: hazardMaps -statistics writes the statistics as rasters

@@ -104,6 +104,16 @@ scalar ensembleRun<Real>::readMember(const label k, const word& name)
         ac_.erodedDepth->primitiveFieldRef() =
             volScalarField(io("erodedDepth"), mesh).primitiveField();
         ac_.hasEroded = true;
+        if (ac_.HEntrainable.valid())
+        {
+            // Plan coordinates: both per plan area too, as H, so that the
+            // restart continues exactly (avalancheCase::copyCover)
+            ac_.HEntrainable->primitiveFieldRef() =
+                volScalarField(io("HEntrainable"), mesh).primitiveField();
+            ac_.HErodedDepth->primitiveFieldRef() =
+                volScalarField(io("HErodedDepth"), mesh).primitiveField();
+            ac_.hasPlanCover = true;
+        }
     }
     ac_.hasMomentum = true;
     ac_.hasPeaks = true;
