@@ -32,7 +32,9 @@
 #     distances are O(1) whatever the backend.  Prints the cell-update
 #     rates.
 #     Plan coordinates: terrainBend as bin/bundleOpenFOAM prepared it
-#     (fields with H).
+#     (fields with H).  The bed's cover: terrainEntrainment as it prepared
+#     it, once for each of erosionEnergy, constantRate and frontal (fields
+#     with hEntrainable, erodedDepth, HEntrainable, HErodedDepth).
 #     -ensemble: the ensemble tutorial on both backends, every file under
 #     ensemble/ byte for byte (in float too, unless approximate).
 #
@@ -111,6 +113,12 @@ compare()
     [ -f "$cpu/$(echo "$times" | head -n1)/pMax" ] && fields="$fields pMax"
     # H: plan coordinates (the volume per plan area)
     [ -f "$cpu/$(echo "$times" | head -n1)/H" ] && fields="$fields H"
+    # The bed's cover where the case has one (slope coordinates: normal
+    # thicknesses; plan: also per plan area)
+    for f in hEntrainable erodedDepth HEntrainable HErodedDepth
+    do
+        [ -f "$cpu/$(echo "$times" | head -n1)/$f" ] && fields="$fields $f"
+    done
     for t in $times
     do
         for f in $fields
@@ -252,6 +260,33 @@ then
     compare terrainBend single
 else
     echo "FAIL  terrainBend: no bundle/cases/terrainBend (bin/bundleOpenFOAM prepares it)"
+    status=1
+fi
+
+# The bed's cover: terrainEntrainment as bin/bundleOpenFOAM prepared it
+# (terrainBend's couloir with an erodible snow cover, erosionEnergy, and
+# a forest's resistance), to t = 40, and the same with each other model
+# of the list (constantRate, frontal at their defaults)
+if [ -d "$work/bundle/cases/terrainEntrainment" ]
+then
+    for model in erosionEnergy constantRate frontal
+    do
+        name="terrainEntrainment-$model"
+        mkdir -p "$work/$name"
+        rm -rf "$work/$name/base"
+        cp -r "$work/bundle/cases/terrainEntrainment" "$work/$name/base"
+        (
+            cd "$work/$name/base" || exit 1
+            setEntry system/controlDict endTime 40
+            setEntry system/controlDict writeInterval 20
+            setEntry system/controlDict writeFormat binary
+            setEntry constant/transportProperties entrainmentModel "$model"
+        )
+        compare "$name" double
+        compare "$name" single
+    done
+else
+    echo "FAIL  terrainEntrainment: no bundle/cases/terrainEntrainment (bin/bundleOpenFOAM prepares it)"
     status=1
 fi
 
