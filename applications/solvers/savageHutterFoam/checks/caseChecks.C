@@ -493,8 +493,23 @@ void avalancheCase::checkCover() const
         }
         if (!hasEroded && input.entraining() && runTime.value() > 0)
         {
-            Info<< "No erodedDepth in " << now << ": the eroded depth"
-                << " is counted from " << now << nl;
+            // Not the continuation of the run that wrote this time: its
+            // maps and report count erosion from here, and a model whose
+            // depth depends on what was taken up (frontal) erodes again
+            WarningInFunction
+                << "No erodedDepth in " << now << ": the eroded depth is"
+                << " counted from " << now << ", so this is not an exact"
+                << " restart (entrainmentModel "
+                << sh::toString(input.model.entrainmentModel).c_str()
+                << (
+                       input.model.entrainmentModel
+                    == sh::EntrainmentModel::FrontalEntrainment
+                     ? " erodes again down to the depth of the flow's load,"
+                       " whatever was taken up before"
+                     : ""
+                   )
+                << "); restart from a time that holds erodedDepth for one"
+                << nl;
         }
         const scalar layer =
             returnReduce(max(hEntrainable().primitiveField()), maxOp<scalar>());
