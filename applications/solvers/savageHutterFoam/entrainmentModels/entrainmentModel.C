@@ -42,7 +42,7 @@ bool needsCoeffs(const word& name)
 
 entrainmentModel::entrainmentModel(const dictionary& coeffs)
 :
-    coeffs_(coeffs)
+    modelCoefficients(coeffs)
 {}
 
 
@@ -103,56 +103,6 @@ autoPtr<entrainmentModel> entrainmentModel::New(const dictionary& tp)
         return autoPtr<entrainmentModel>(cstrIter()(empty));
     }
     return autoPtr<entrainmentModel>(cstrIter()(ce->dict()));
-}
-
-
-string entrainmentModel::boundText(const sh::Bound bound)
-{
-    switch (bound)
-    {
-        case sh::Bound::angle: return "in [0, 90)";
-        case sh::Bound::positive: return "> 0";
-        case sh::Bound::nonNegative: return ">= 0";
-        case sh::Bound::finite: return "finite";
-    }
-    return string();
-}
-
-
-scalar entrainmentModel::coeff(const word& key) const
-{
-    if (!coeffs_.found(key, keyType::LITERAL))
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << "Missing coefficient '" << key << "' in "
-            << coeffs_.dictName() << nl << exit(FatalIOError);
-    }
-    return coeffs_.get<scalar>(key);
-}
-
-
-void entrainmentModel::checkKeywords
-(
-    const wordList& valid,
-    const wordList& required
-) const
-{
-    for (const word& key : coeffs_.toc())
-    {
-        if (!valid.found(key))
-        {
-            FatalIOErrorInFunction(coeffs_)
-                << "Unknown coefficient '" << key << "' in "
-                << coeffs_.dictName() << "." << nl
-                << "Valid coefficients: " << flatOutput(valid) << nl
-                << "(see savageHutterFoam -listEntrainmentModels)" << nl
-                << exit(FatalIOError);
-        }
-    }
-    for (const word& key : required)
-    {
-        coeff(key);
-    }
 }
 
 } // End namespace Foam

@@ -15,7 +15,7 @@ defineRunTimeSelectionTable(frictionModel, dictionary);
 
 frictionModel::frictionModel(const dictionary& coeffs)
 :
-    coeffs_(coeffs)
+    modelCoefficients(coeffs)
 {}
 
 
@@ -55,42 +55,6 @@ autoPtr<frictionModel> frictionModel::New(const dictionary& tp)
             << exit(FatalIOError);
     }
     return autoPtr<frictionModel>(cstrIter()(tp.subDict(coeffsName)));
-}
-
-
-scalar frictionModel::coeff(const word& key) const
-{
-    if (!coeffs_.found(key, keyType::LITERAL))
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << "Missing coefficient '" << key << "' in "
-            << coeffs_.dictName() << nl << exit(FatalIOError);
-    }
-    return coeffs_.get<scalar>(key);
-}
-
-
-void frictionModel::checkKeywords
-(
-    const wordList& valid,
-    const wordList& required
-) const
-{
-    for (const word& key : coeffs_.toc())
-    {
-        if (!valid.found(key))
-        {
-            FatalIOErrorInFunction(coeffs_)
-                << "Unknown coefficient '" << key << "' in "
-                << coeffs_.dictName() << "." << nl
-                << "Valid coefficients: " << flatOutput(valid) << nl
-                << exit(FatalIOError);
-        }
-    }
-    for (const word& key : required)
-    {
-        coeff(key);
-    }
 }
 
 } // End namespace Foam
