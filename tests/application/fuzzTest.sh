@@ -14,7 +14,8 @@
 #     header, of another class or cut short, and, for some keywords,
 #     values that break a rule between two entries (delta > phi with
 #     activePassive, zeta1 >= zeta2, a step that cannot reach endTime, ...;
-#     these must be rejected).  Variants that make no sense for a keyword
+#     these must be rejected; values at a listed bound or an accepted edge
+#     case must run).  Variants that make no sense for a keyword
 #     are left out (an absent optional entry cannot go missing; with
 #     adjustableRunTime writes and no maxDeltaT, endTime 1e20 is a legal
 #     run that ends when the user ends it).  The prepared cases:
@@ -44,6 +45,34 @@
 #                  phi are rejected);
 #       ap         earthPressure activePassive with Coulomb: phi below
 #                  delta is rejected;
+#       ent<Name>  for every entrainment model that savageHutterFoam
+#                  -listEntrainmentModels lists (src/savageHutter/physics/
+#                  entrainmentModels): entrainmentModel <Name> with every
+#                  coefficient at its default, 0/hEntrainable 0.1 m and
+#                  0/cResistance 0.01 1/m: <Name>Coeffs (missing: rejected
+#                  where a coefficient is required; for a model without
+#                  coefficients empty, or with a keyword: rejected), a
+#                  keyword it does not know (rejected), and every
+#                  coefficient: the standard variants marked by its listed
+#                  bound (outside: rejected; on a closed end: must run),
+#                  just outside each end and on it, non-numeric, nan and a
+#                  required one missing (rejected), and the model's edge
+#                  cases (accepted: must run; rejected);
+#                  in the first model's case (with coefficients) also
+#                  entrainmentModel and the bed's cover: 0/hEntrainable
+#                  (missing: rejected with a model; also with none) and
+#                  0/cResistance, each whole, its dimensions (m and 1/m;
+#                  others rejected), internalField (range [0, 1e30] in
+#                  every cell: negative, nan, 1.01e30, one cell negative
+#                  or nan, the wrong size rejected; 0 and 1e30 must run),
+#                  boundaryField and a patch type;
+#       restartCover, restartPlan  that case run to 0.01 and restarted
+#                  from latestTime, in slope and in plan coordinates
+#                  (coordinates plan, no inclination): in 0.01/ erodedDepth
+#                  (whole, dimensions, internalField, boundaryField),
+#                  hEntrainable and cResistance (whole, internalField),
+#                  HEntrainable and HErodedDepth (whole, dimensions,
+#                  internalField), the same range;
 #       jet        system/fvOptions with an impingingJet: centre, R, R_imp,
 #                  u_jet, type, active, selectionMode;
 #       jetCoeffs  the same with the coefficients in impingingJetCoeffs:
@@ -192,8 +221,8 @@ do
         ;;
     edge)
         # edge <name> <keyword> <value> accepted|rejected isotropic|activePassive
-        local_v="$a=$c"
-        [ "$d" = rejected ] && local_v="$local_v!"
+        local_v="$a=$c+"
+        [ "$d" = rejected ] && local_v="$a=$c!"
         if [ "$e" = activePassive ]
         then
             edgeAp[$b]="${edgeAp[$b]:-},$local_v"
@@ -206,6 +235,220 @@ done < "$work/frictionLaws.log"
 endLaw
 [ -n "$lawCases" ] || { fail "no friction law in savageHutterFoam -listFrictionLaws"; finish; exit 1; }
 
+# -- The entrainment models: from the solver's own list --------------------------
+#- entCases: a line "Name|{ coefficients }" per model (every coefficient at
+#  its default); entKeywords: the keyword lines (below) of its case ent<Name>
+#  and, in the case of the first model with coefficients (entFirst), of the
+#  bed's cover 0/hEntrainable and 0/cResistance
+(cd "$work" && savageHutterFoam -listEntrainmentModels > entrainmentModels.log 2>&1) \
+ && grep -q '^entrainmentModel ' "$work/entrainmentModels.log" \
+ || { cat "$work/entrainmentModels.log"; fail "savageHutterFoam -listEntrainmentModels"; finish; exit 1; }
+
+#- numIn <value> <bound>: status 0 when the number lies within the bound of
+#  the listing (">= a", "> a", "<= b", "< b", "[a, b)" and the like,
+#  "finite"), 1 when outside, 2 when the bound is of another form
+numIn()
+{
+    awk -v v="$1" -v b="$2" 'BEGIN {
+        gsub(/ /, "", b)
+        if (b == "finite") exit 0
+        if (b ~ /^>=/) { lo = substr(b, 3) + 0; exit !(v + 0 >= lo) }
+        if (b ~ /^>/)  { lo = substr(b, 2) + 0; exit !(v + 0 >  lo) }
+        if (b ~ /^<=/) { hi = substr(b, 3) + 0; exit !(v + 0 <= hi) }
+        if (b ~ /^</)  { hi = substr(b, 2) + 0; exit !(v + 0 <  hi) }
+        if (b ~ /^[[(][^,]+,[^,]+[])]$/) {
+            lc = substr(b, 1, 1); hc = substr(b, length(b), 1)
+            split(substr(b, 2, length(b) - 2), e, ",")
+            lo = e[1] + 0; hi = e[2] + 0; x = v + 0
+            ok = (lc == "[" ? x >= lo : x > lo) && (hc == "]" ? x <= hi : x < hi)
+            exit !ok
+        }
+        exit 2
+    }'
+}
+
+#- boundEnds <bound>: the finite ends of a bound, lines "lo|value|closed"
+#  and "hi|value|closed" (closed yes or no)
+boundEnds()
+{
+    awk -v b="$1" 'BEGIN {
+        gsub(/ /, "", b)
+        if (b ~ /^>=/) print "lo|" substr(b, 3) "|yes"
+        else if (b ~ /^>/) print "lo|" substr(b, 2) "|no"
+        else if (b ~ /^<=/) print "hi|" substr(b, 3) "|yes"
+        else if (b ~ /^</) print "hi|" substr(b, 2) "|no"
+        else if (b ~ /^[[(][^,]+,[^,]+[])]$/) {
+            lc = substr(b, 1, 1); hc = substr(b, length(b), 1)
+            split(substr(b, 2, length(b) - 2), e, ",")
+            print "lo|" e[1] "|" (lc == "[" ? "yes" : "no")
+            print "hi|" e[2] "|" (hc == "]" ? "yes" : "no")
+        }
+    }'
+}
+
+#- boundMark <value> <bound>: "!" outside the bound (must be rejected), "+"
+#  on a closed end (must run), "" else
+boundMark()
+{
+    numIn "$1" "$2"
+    if [ $? -eq 1 ]; then echo "!"; return; fi
+    local s e c
+    while IFS='|' read -r s e c
+    do
+        [ "$c" = yes ] && awk -v a="$1" -v b="$e" 'BEGIN { exit !(a + 0 == b + 0) }' \
+            && { echo "+"; return; }
+    done < <(boundEnds "$2")
+    echo ""
+}
+
+#- coeffExtras <bound> <required> <edges>: sets $extras, the variants of a
+#  coefficient: every standard number marked by the bound (outside: must
+#  be rejected "!"; on a closed end: must run "+"), just outside each end
+#  (belowMin, aboveMax) and on it (atMin, atMax), missing (rejected when
+#  required), non-numeric and nan rejected, and the model's edge cases
+#  (",name=value!" or "+", as listed)
+coeffExtras()
+{
+    local bound="$1" required="$2" edges="$3" name v side end closed
+    local values=" " ev
+    for ev in ${edges//,/ }
+    do
+        v="${ev#*=}"; v="${v%!}"; v="${v%+}"
+        values="$values$v "
+    done
+    extras="-wrongType,wrongType=fuzzWord!,-nan,nan=nan!"
+    [ "$required" = required ] && extras="$extras,-missing,missing=-!"
+    for name in negative=-1 zero=0 huge=1e300 huge20=1e20
+    do
+        v="${name#*=}"
+        extras="$extras,-${name%%=*},$name$(boundMark "$v" "$bound")"
+    done
+    while IFS='|' read -r side end closed
+    do
+        [ -n "$side" ] || continue
+        local out
+        if [ "$side" = lo ]
+        then
+            out="$(awk -v e="$end" 'BEGIN { d = (e < 0 ? -e : e); if (d < 1) d = 1; printf "%.6g", e - 1e-4*d }')"
+            name=belowMin
+        else
+            out="$(awk -v e="$end" 'BEGIN { d = (e < 0 ? -e : e); if (d < 1) d = 1; printf "%.6g", e + 1e-4*d }')"
+            name=aboveMax
+        fi
+        extras="$extras,$name=$out!"
+        case " -1 0 1e300 1e20$values" in
+        *" $end "*) ;;
+        *) extras="$extras,at${name:5}=$end$(boundMark "$end" "$bound")" ;;
+        esac
+    done < <(boundEnds "$bound")
+    numIn 0 "$bound"; [ $? -ne 2 ] || fail "-listEntrainmentModels: a bound of unknown form '$bound' (this test knows >=, >, <=, <, [a, b), finite)"
+    extras="$extras$edges"
+}
+
+entCases=""
+entKeywords=""
+entFirst=""
+entName=""
+declare -A entEdges
+declare -A entBound
+coeffRe='^ *coefficient +([^ ]+) +([^ ]+) +(required|optional) +([^ ]+) +(finite|[<>]=? *[^ ]+|[[(][^],)]*, *[^],)]*[])]) +(.*)$'
+edgeRe='^ *edge +([^ ]+) +([^ ]+) +([^ ]+) +(accepted|rejected) *$'
+#- endModel: the case and keyword lines of the model read so far
+endModel()
+{
+    [ -n "$entName" ] || return 0
+    local M="$entName" key required
+    entCases="$entCases$M|{$entEntries }
+"
+    if [ -n "$entKeys" ]
+    then
+        [ -n "$entFirst" ] || entFirst="$M"
+        local dictExtras=""
+        [ -z "${entRequired// /}" ] || dictExtras="|-missing,missing=-!"
+        entKeywords="${entKeywords}savageHutterFoam|ent$M|$tp|${M}Coeffs|dict$dictExtras
+savageHutterFoam|ent$M|$tp|${M}Coeffs/fuzzKeyword|unknown
+"
+        for key in $entKeys
+        do
+            required=optional
+            [[ "$entRequired " == *" $key "* ]] && required=required
+            coeffExtras "${entBound[$key]}" "$required" "${entEdges[$key]:-}"
+            entKeywords="${entKeywords}savageHutterFoam|ent$M|$tp|${M}Coeffs/$key|num|$extras
+"
+        done
+    else
+        # A model without coefficients takes no <Model>Coeffs entries
+        entKeywords="${entKeywords}savageHutterFoam|ent$M|$tp|${M}Coeffs|unknowndict
+"
+    fi
+    entName=""
+}
+while IFS= read -r line
+do
+    if [[ $line =~ ^entrainmentModel\ +([^ ]+) ]]
+    then
+        endModel
+        entName="${BASH_REMATCH[1]}"; entEntries=""; entKeys=""; entRequired=" "
+        entEdges=(); entBound=()
+    elif [ -n "$entName" ] && [[ $line =~ $coeffRe ]]
+    then
+        key="${BASH_REMATCH[1]}"
+        entKeys="$entKeys $key"
+        entEntries="$entEntries $key ${BASH_REMATCH[2]};"
+        [ "${BASH_REMATCH[3]}" = required ] && entRequired="$entRequired$key "
+        entBound[$key]="${BASH_REMATCH[5]}"
+    elif [ -n "$entName" ] && [[ $line =~ $edgeRe ]]
+    then
+        # edge <name> <keyword> <value> accepted|rejected
+        v="${BASH_REMATCH[1]}=${BASH_REMATCH[3]}+"
+        [ "${BASH_REMATCH[4]}" = rejected ] && v="${BASH_REMATCH[1]}=${BASH_REMATCH[3]}!"
+        entEdges[${BASH_REMATCH[2]}]="${entEdges[${BASH_REMATCH[2]}]:-},$v"
+    elif [ -n "$entName" ] && [[ $line =~ ^\ *(coefficient|edge)\  ]]
+    then
+        fail "-listEntrainmentModels: a line of another form than this test reads: '$line'"
+    fi
+done < "$work/entrainmentModels.log"
+endModel
+[ -n "$entFirst" ] || { fail "no entrainment model with coefficients in savageHutterFoam -listEntrainmentModels"; finish; exit 1; }
+
+#- The bed's cover: a field file's variants, range [0, 1e30] in every cell
+#  (16 x 2 cells; a restart's files as well; values of 6 digits at most,
+#  as foamDictionary writes them)
+coverRange="-wrongType,wrongType=uniform (1 0 0)!,-nan,nan=uniform nan!,-negative,negative=uniform -1!,-huge,huge=uniform 1e300!,aboveMax=uniform 1.01e30!,oneCellNegative=nonuniform List<scalar> 32(0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 -0.001)!,oneCellNan=nonuniform List<scalar> 32(0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 nan 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1)!,-wrongSize,wrongSize=nonuniform List<scalar> 3(1 1 1)!,-misspeltValue,misspeltValue=uniformm 1!"
+#  in 0/: 0 and 1e30 must run
+coverRange0="$coverRange,-zero,zero=uniform 0+,atMax=uniform 1e30+"
+dimsLength="-zero,zero=[0 0 0 0 0 0 0]!,-negative,negative=[0 -1 0 0 0 0 0]!"
+dimsPerLength="-zero,zero=[0 0 0 0 0 0 0]!,-negative,right=[0 -1 0 0 0 0 0]+,metres=[0 1 0 0 0 0 0]!"
+E="ent$entFirst"
+entKeywords="${entKeywords}savageHutterFoam|$E|$tp|entrainmentModel|word:$entFirst
+savageHutterFoam|entnone|0/hEntrainable|.|file
+savageHutterFoam|$E|0/hEntrainable|.|file|-missing,missing=-!
+savageHutterFoam|$E|0/hEntrainable|dimensions|dims|$dimsLength
+savageHutterFoam|$E|0/hEntrainable|internalField|sfield|$coverRange0
+savageHutterFoam|$E|0/hEntrainable|boundaryField|dict
+savageHutterFoam|$E|0/hEntrainable|boundaryField/upslope/type|word:zeroGradient
+savageHutterFoam|$E|0/cResistance|.|file
+savageHutterFoam|$E|0/cResistance|dimensions|dims|$dimsPerLength
+savageHutterFoam|$E|0/cResistance|internalField|sfield|$coverRange0
+savageHutterFoam|$E|0/cResistance|boundaryField|dict
+savageHutterFoam|$E|0/cResistance|boundaryField/upslope/type|word:zeroGradient
+savageHutterFoam|restartCover|0.01/erodedDepth|.|file
+savageHutterFoam|restartCover|0.01/erodedDepth|dimensions|dims|$dimsLength
+savageHutterFoam|restartCover|0.01/erodedDepth|internalField|sfield|$coverRange
+savageHutterFoam|restartCover|0.01/erodedDepth|boundaryField|dict
+savageHutterFoam|restartCover|0.01/hEntrainable|.|file
+savageHutterFoam|restartCover|0.01/hEntrainable|internalField|sfield|$coverRange
+savageHutterFoam|restartCover|0.01/cResistance|.|file
+savageHutterFoam|restartCover|0.01/cResistance|internalField|sfield|$coverRange
+savageHutterFoam|restartPlan|0.01/erodedDepth|internalField|sfield|$coverRange
+savageHutterFoam|restartPlan|0.01/HEntrainable|.|file
+savageHutterFoam|restartPlan|0.01/HEntrainable|dimensions|dims|$dimsLength
+savageHutterFoam|restartPlan|0.01/HEntrainable|internalField|sfield|$coverRange
+savageHutterFoam|restartPlan|0.01/HErodedDepth|.|file
+savageHutterFoam|restartPlan|0.01/HErodedDepth|dimensions|dims|$dimsLength
+savageHutterFoam|restartPlan|0.01/HErodedDepth|internalField|sfield|$coverRange
+"
+
 #- clean <case>: no time directory but 0, no logs
 clean()
 {
@@ -215,6 +458,15 @@ clean()
         case "${t##*/}" in 0|*orig*) ;; *) rm -rf "$t" ;; esac
     done
     rm -rf "$1"/log.* "$1/postProcessing"
+}
+
+#- coverField <case> <name> <dimensions> <value>: 0/<name> uniform value,
+#  the boundary types of 0/h
+coverField()
+{
+    sed -e "s/^\( *object  *\)h;/\1$2;/" -e "s/^dimensions .*/dimensions      $3;/" \
+        "$1/0/h" > "$1/0/$2" \
+    && setEntry "$1/0/$2" internalField "uniform $4"
 }
 
 #- runs <case>: savageHutterFoam runs there to End (set-up check)
@@ -260,6 +512,47 @@ runs()
             runs "$work/ap$L"
         fi
     done <<< "$lawCases"
+
+    # A case per entrainment model: every coefficient at its default, an
+    # erodible layer 0/hEntrainable of 0.1 m and a resistance 0/cResistance
+    # of 0.01 1/m (as 0/h, its boundary types)
+    while IFS='|' read -r M entries
+    do
+        [ -n "$M" ] || continue
+        d="$work/ent$M"; cp -r "$b" "$d"
+        coverField "$d" hEntrainable '[0 1 0 0 0 0 0]' 0.1
+        coverField "$d" cResistance '[0 -1 0 0 0 0 0]' 0.01
+        setEntry "$d/$tp" entrainmentModel "$M"
+        [ "$entries" = "{ }" ] || setEntry "$d/$tp" "${M}Coeffs" "$entries"
+        runs "$d"
+    done <<< "$entCases"
+
+    # Restarts with the cover: the first model with coefficients run to
+    # 0.01, restarted from there to 0.02; in slope and in plan coordinates
+    # (the latter writes HEntrainable and HErodedDepth)
+    for c in restartCover restartPlan
+    do
+        d="$work/$c"; cp -r "$work/ent$entFirst" "$d"
+        if [ "$c" = restartPlan ]
+        then
+            setEntry "$d/$tp" coordinates plan
+            foamDictionary "$d/$tp" -entry inclination -remove > /dev/null
+        fi
+        setEntry "$d/$cd_" endTime 0.01
+        runs "$d"
+        (cd "$d" && savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1)
+        [ -f "$d/0.01/erodedDepth" ] && [ -f "$d/0.01/cResistance" ] \
+            && { [ "$c" = restartCover ] || [ -f "$d/0.01/HErodedDepth" ]; } \
+            || { echo "set-up: $d wrote no 0.01 with the cover"; exit 1; }
+        rm -rf "$d"/log.* "$d/postProcessing"
+        setEntry "$d/$cd_" endTime 0.02
+        setEntry "$d/$cd_" startFrom latestTime
+        (cd "$d" && savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1) \
+            && grep -q '^End' "$d/log.savageHutterFoam" \
+            || { echo "set-up: $d does not restart"; tail -n 20 "$d/log.savageHutterFoam"; exit 1; }
+        rm -rf "$d/0.02" "$d"/log.* "$d/postProcessing"
+        echo 0.01 > "$d/.keep"
+    done
 
     d="$work/ap"; cp -r "$b" "$d"
     setEntry "$d/$tp" earthPressure activePassive
@@ -338,7 +631,9 @@ zb ( plane { gradient (0.02 0.05); } );' > "$d/system/zbDict"
 #   setAvalancheFieldsDict), count (a cell count of blockMeshDict), block
 #   (blockMeshDict's block)
 #   extras: comma-separated name=value variants (name=value!: it must be
-#   rejected), -name: a standard variant left out
+#   rejected; name=value+: it must run, OK), -name: a standard variant left
+#   out; kinds unknown (a keyword set that the dictionary does not know)
+#   and unknowndict (<Model>Coeffs of a model without coefficients)
 #   app blockMesh: blockMesh, then savageHutterFoam on what it made
 keywords="
 savageHutterFoam|base|$tp|g|num
@@ -511,8 +806,10 @@ setAvalancheFields|pre|$sa|U/damBreak/downstream|vec
 setAvalancheFields|pre|0/h|internalField|sfield
 "
 # The friction laws' lines (from savageHutterFoam -listFrictionLaws, above)
+# and the entrainment models' and the bed's cover's (-listEntrainmentModels)
 keywords="$keywords
-$lawKeywords"
+$lawKeywords
+$entKeywords"
 
 #- variants <kind> <extras>: lines "name|value"; value "-" removes the
 #  entry, "~" renames the keyword (misspelt)
@@ -656,6 +953,16 @@ truncated|truncated"
         ;;
     both)
         list="both|both!"
+        ;;
+    unknown)
+        # A keyword the dictionary does not know (in <Model>Coeffs)
+        list="unknown|1!"
+        ;;
+    unknowndict)
+        # <Model>Coeffs of a model without coefficients: empty, or with a
+        # keyword
+        list="empty|{ }
+unknown|{ fuzzKeyword 1; }!"
         ;;
     block)
         list="missing|-
@@ -918,6 +1225,13 @@ makeVariant()
         && foamDictionary "$d/$file" -entry "$parent${value#\~}" \
                -add "$old" > /dev/null
         ;;
+    nonuniform*nan*)
+        # foamDictionary cannot read a list with nan: the internalField
+        # written in place
+        [ "$entry" = internalField ] || return 1
+        FUZZ_VALUE="$value" perl -0pi -e 's/\binternalField\b[^;]*;/internalField   $ENV{FUZZ_VALUE};/' "$d/$file" \
+            && grep -qF "$value" "$d/$file"
+        ;;
     *)
         foamDictionary "$d/$file" -entry "$entry" -set "$value" > /dev/null
         ;;
@@ -1027,13 +1341,17 @@ known="
 runVariant()
 {
     local n="$1" app="$2" from="$3" file="$4" entry="$5" kind="$6" vname="$7" value="$8"
-    local key="${entry##*/}" mustReject=""
+    local key="${entry##*/}" mustReject="" mustRun=""
     local d="$work/v$n"
     local out="$work/result.$n"
     if [ "${value: -1}" = "!" ]
     then
         mustReject=yes
         value="${value%!}"
+    elif [ "${value: -1}" = "+" ]
+    then
+        mustRun=yes
+        value="${value%+}"
     fi
     cp -r "$work/$from" "$d"
     # The message must name the keyword; a misspelt keyword may be named as
@@ -1053,6 +1371,7 @@ runVariant()
     blocks) patterns+=(simpleGrading aligned) ;;
     esac
     [ "$vname" = misspeltValue ] && patterns+=("${value%% *}")
+    case "$kind" in unknown|unknowndict) patterns+=(fuzzKeyword) ;; esac
     if ! makeVariant "$d" "$file" "$entry" "$vname" "$value" "$from"
     then
         echo "BAD cannot make the variant (value '$value')|$value" > "$out"
@@ -1097,6 +1416,10 @@ runVariant()
     if [ -n "$mustReject" ] && [ "${outcome%% *}" = OK ]
     then
         outcome="BAD ran, but must be rejected: $outcome"
+    fi
+    if [ -n "$mustRun" ] && [ "${outcome%% *}" = REJECTED ]
+    then
+        outcome="BAD rejected, but must run: $outcome"
     fi
     # A misspelt keyword must not fall back to a default, except where any
     # entry is allowed: controlDict (OpenFOAM's Time takes any entry there)
