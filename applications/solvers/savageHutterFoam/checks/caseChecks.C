@@ -511,6 +511,26 @@ void avalancheCase::checkCover() const
                 << "); restart from a time that holds erodedDepth for one"
                 << nl;
         }
+        // Plan coordinates: the layer per plan area as the run held it is
+        // HEntrainable, HErodedDepth; without them the restart starts from
+        // J hEntrainable, which the written digits need not give back
+        if
+        (
+            input.plan() && input.entraining() && runTime.value() > 0
+         && !hasPlanCover
+         && (
+                !isFile(runTime.timePath()/"HEntrainable")
+             || !isFile(runTime.timePath()/"HErodedDepth")
+            )
+        )
+        {
+            WarningInFunction
+                << "No HEntrainable or HErodedDepth in " << now << ": the"
+                << " layer and eroded depth per plan area start from J"
+                << " hEntrainable and J erodedDepth, so this is not an exact"
+                << " restart; restart from a time that holds them for one"
+                << nl;
+        }
         const scalar layer =
             returnReduce(max(hEntrainable().primitiveField()), maxOp<scalar>());
         Info<< "Erodible layer hEntrainable: largest " << layer << " m"
@@ -520,6 +540,20 @@ void avalancheCase::checkCover() const
                  + sh::toString(input.model.entrainmentModel)
                  : string(", not taken up (entrainmentModel none)")
                ).c_str() << nl;
+    }
+    if
+    (
+        !cResistance.valid() && runTime.value() > 0
+     && isFile(runTime.path()/"0"/"cResistance")
+    )
+    {
+        // The fields are read from the start time: one written without
+        // the resistance (its file removed, or a run that had none) runs
+        // without it, which 0/ would not
+        WarningInFunction
+            << "No cResistance in " << now << " but one in "
+            << (runTime.path()/"0") << ": this run has no resistance; copy"
+            << " it to " << now << " to keep it" << nl;
     }
     if (cResistance.valid())
     {
