@@ -268,27 +268,45 @@ PY
 )"
 tally $? "$out" "statistics by hand"
 
+#- restartLegs <case>: its ensemble to t = 1, then on to 2 (startFrom
+#  latestTime), logs log.first and log.second; the exit status of the
+#  legs
+restartLegs()
+{
+    (
+        cd "$1" || exit 1
+        setEntry system/controlDict endTime 1
+        savageHutterFoam -ensemble -backend cpu > log.first 2>&1 || exit 1
+        setEntry system/controlDict endTime 2
+        savageHutterFoam -ensemble -backend cpu > log.second 2>&1
+    )
+}
+
+#- sameAt2 <straight> <restarted>: in $bad, the files at t = 2 of every
+#  member and of the statistics, and report.dat, that differ
+sameAt2()
+{
+    bad=""
+    local d f
+    for d in "$1"/ensemble/member* "$1/ensemble/statistics"
+    do
+        for f in "$d"/2/*
+        do
+            [ -f "$f" ] || continue
+            cmp -s "$f" "$2/ensemble/$(basename "$d")/2/$(basename "$f")" \
+                || bad="$bad $(basename "$d")/$(basename "$f")"
+        done
+    done
+    cmp -s "$1/ensemble/report.dat" "$2/ensemble/report.dat" \
+        || bad="$bad report.dat"
+}
+
 # Restart: to 1, then on to 2, against the run straight to 2
 re="$(newCase restart)"
 ensembleDict "$re" "$product"
-(
-    cd "$re" || exit 1
-    setEntry system/controlDict endTime 1
-    savageHutterFoam -ensemble -backend cpu > log.first 2>&1 || exit 1
-    setEntry system/controlDict endTime 2
-    savageHutterFoam -ensemble -backend cpu > log.second 2>&1
-)
+restartLegs "$re"
 rc=$?
-bad=""
-for d in "$main"/ensemble/member* "$main/ensemble/statistics"
-do
-    for f in "$d"/2/*
-    do
-        [ -f "$f" ] || continue
-        cmp -s "$f" "$re/ensemble/$(basename "$d")/2/$(basename "$f")" || bad="$bad $(basename "$d")/$(basename "$f")"
-    done
-done
-cmp -s "$main/ensemble/report.dat" "$re/ensemble/report.dat" || bad="$bad report.dat"
+sameAt2 "$main" "$re"
 if [ $rc -eq 0 ] && grep -q "Restart of the ensemble from t = 1" "$re/log.second" && [ -z "$bad" ]
 then
     pass "restart: to t = 1, then on to 2 (startFrom latestTime): every member's files, the statistics and report.dat byte for byte the run straight to 2"
@@ -536,24 +554,9 @@ tally $? "$out" "cover report"
 # depth read back as a single run's restart reads them
 coverRe="$(newCase coverRestart "$coverBase")"
 cp "$cover/system/ensembleDict" "$coverRe/system/"
-(
-    cd "$coverRe" || exit 1
-    setEntry system/controlDict endTime 1
-    savageHutterFoam -ensemble -backend cpu > log.first 2>&1 || exit 1
-    setEntry system/controlDict endTime 2
-    savageHutterFoam -ensemble -backend cpu > log.second 2>&1
-)
+restartLegs "$coverRe"
 rc=$?
-bad=""
-for d in "$cover"/ensemble/member* "$cover/ensemble/statistics"
-do
-    for f in "$d"/2/*
-    do
-        [ -f "$f" ] || continue
-        cmp -s "$f" "$coverRe/ensemble/$(basename "$d")/2/$(basename "$f")" || bad="$bad $(basename "$d")/$(basename "$f")"
-    done
-done
-cmp -s "$cover/ensemble/report.dat" "$coverRe/ensemble/report.dat" || bad="$bad report.dat"
+sameAt2 "$cover" "$coverRe"
 if [ $rc -eq 0 ] && grep -q "Restart of the ensemble from t = 1" "$coverRe/log.second" && [ -z "$bad" ]
 then
     pass "cover restart: to t = 1, then on to 2: every member's files (hEntrainable, erodedDepth too), the statistics and report.dat byte for byte the run straight to 2"
@@ -595,13 +598,7 @@ if (cd "$pcov" && terrainToCase > log.terrainToCase 2>&1 && blockMesh > log.bloc
     && (cd "$pcov" && savageHutterFoam -ensemble -backend cpu > log.ensemble 2>&1)
 then
     pre="$work/planCoverRestart"
-    (
-        cd "$pre" || exit 1
-        setEntry system/controlDict endTime 1
-        savageHutterFoam -ensemble -backend cpu > log.first 2>&1 || exit 1
-        setEntry system/controlDict endTime 2
-        savageHutterFoam -ensemble -backend cpu > log.second 2>&1
-    )
+    restartLegs "$pre"
     rc=$?
     bad=""
     for k in 0 1
