@@ -38,7 +38,9 @@
 #         volume; the members differ where their parameters do; a
 #         restart of it at t = 1 byte for byte the run straight to 2; in
 #         plan coordinates (an erodible bed on planSlopeCase, two rates)
-#         the restart exact, HEntrainable and HErodedDepth too;
+#         each member byte for byte its single run (h, U, H, hU,
+#         hEntrainable, erodedDepth, HEntrainable, HErodedDepth at t = 1
+#         and 2) and the restart exact, HEntrainable and HErodedDepth too;
 #       - foamToVTK -case ensemble/statistics and -case ensemble/member<k>
 #         (they are cases by links to constant/ and system/);
 #       - a terrain ensemble (terrainChute on 40 m cells): hazardMaps
@@ -565,12 +567,12 @@ else
 fi
 
 # The cover in plan coordinates (testFunctions.sh planSlopeCase with an
-# erodible bed, constantRate): two rates; the ensemble restarted at t = 1
+# erodible bed, constantRate): two rates; each member byte for byte its
+# single run at t = 1 and 2 (a single run in plan coordinates also stops
+# at the samples of its centre of mass, avalancheCase::nextComTime, and
+# so does every member: the same steps); the ensemble restarted at t = 1
 # byte for byte the run straight to 2 (each member's layer and eroded
-# depth per plan area read back, as HEntrainable and HErodedDepth).  Not
-# against single runs: a single run in plan coordinates also stops at
-# the samples of its centre of mass (avalancheRun comInterval), which
-# changes its steps, and an ensemble member does not
+# depth per plan area read back, as HEntrainable and HErodedDepth)
 pcov="$work/planCover"
 planSlopeCase "$pcov" 500 800 0
 cat >> "$pcov/system/terrainDict" <<'DICT'
@@ -595,8 +597,28 @@ if (cd "$pcov" && terrainToCase > log.terrainToCase 2>&1 && blockMesh > log.bloc
     && setEntry "$pcov/system/controlDict" startFrom latestTime \
     && ensembleDict "$pcov" 'parameters { "constantRateCoeffs/rate" (0.1 0.3); }' \
     && cp -r "$pcov" "$work/planCoverRestart" \
+    && rm -rf "$work/planCoverBase" && cp -r "$pcov" "$work/planCoverBase" \
     && (cd "$pcov" && savageHutterFoam -ensemble -backend cpu > log.ensemble 2>&1)
 then
+    # Each member against its single run (its rate in transportProperties)
+    for k in 0 1
+    do
+        m="$(printf 'member%04d' "$k")"
+        rate="$(foamDictionary "$pcov/ensemble/$m/parameters" -entry constantRateCoeffs/rate -value)"
+        one="$(newCase "planCoverSingle$k" "$work/planCoverBase")"
+        (
+            cd "$one" || exit 1
+            setEntry constant/transportProperties constantRateCoeffs/rate "$rate"
+            savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1
+        )
+        bad="$(differing "$one/1" "$pcov/ensemble/$m/1" "$planFields")$(differing "$one/2" "$pcov/ensemble/$m/2" "$planFields")"
+        if [ -z "$bad" ]
+        then
+            pass "plan coordinates with a cover: member $k (rate $rate): $planFields at t = 1 and 2 byte for byte its single run"
+        else
+            fail "plan coordinates with a cover: member $k (rate $rate): differs from its single run in:$bad"
+        fi
+    done
     pre="$work/planCoverRestart"
     restartLegs "$pre"
     rc=$?

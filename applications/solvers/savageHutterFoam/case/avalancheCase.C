@@ -728,10 +728,31 @@ scalar avalancheCase::nextWriteTime
     const scalar t, const scalar anchor, const scalar endTime
 ) const
 {
-    const scalar w = input.writeInterval;
-    const scalar k = std::floor((t - anchor)/w + 1e-6) + 1;
+    return nextGridTime(t, anchor, input.writeInterval, endTime);
+}
+
+
+scalar avalancheCase::nextComTime
+(
+    const scalar t, const scalar anchor, const scalar endTime
+) const
+{
+    return nextGridTime
+    (
+        t, anchor, input.writeInterval/comSamples(), endTime
+    );
+}
+
+
+scalar avalancheCase::nextGridTime
+(
+    const scalar t, const scalar anchor, const scalar interval,
+    const scalar endTime
+)
+{
+    const scalar k = std::floor((t - anchor)/interval + 1e-6) + 1;
     char buf[32];
-    snprintf(buf, sizeof(buf), "%.12g", anchor + k*w);
+    snprintf(buf, sizeof(buf), "%.12g", anchor + k*interval);
     return min(scalar(std::strtod(buf, nullptr)), endTime);
 }
 

@@ -170,13 +170,6 @@ void avalancheRun<Real>::openCentreOfMass()
 
 
 template<class Real>
-scalar avalancheRun<Real>::comInterval() const
-{
-    return ac_.input.writeInterval/comSamples();
-}
-
-
-template<class Real>
 void avalancheRun<Real>::recordCentreOfMass()
 {
     const double t = solver_->time();
@@ -324,12 +317,7 @@ bool avalancheRun<Real>::advance()
         {
             if (!(nextCom_ > solver.time()))
             {
-                const scalar dc = comInterval();
-                const scalar k =
-                    std::floor((solver.time() - origin_)/dc + 1e-6) + 1;
-                char buf[32];
-                snprintf(buf, sizeof(buf), "%.12g", origin_ + k*dc);
-                nextCom_ = min(scalar(std::strtod(buf, nullptr)), endTime_);
+                nextCom_ = ac_.nextComTime(solver.time(), origin_, endTime_);
             }
             target = min(target, nextCom_);
         }

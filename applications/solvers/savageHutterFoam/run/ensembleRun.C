@@ -510,6 +510,15 @@ void ensembleRun<Real>::run()
             << nl;
         return tMin;
     };
+    // Plan coordinates: a single run also stops at the samples of its
+    // centre of mass (avalancheRun::advance, avalancheCase::nextComTime,
+    // on the write times' grid), so every member stops there too: the
+    // same steps (nothing is recorded there)
+    const bool samples = ac_.input.plan();
+    scalar nextCom = -GREAT;
+    // Where every member stands: the last stop reached
+    scalar tStop = t;
+    clock::time_point lastLog = clock::now();
     while (t < endTime)
     {
         // The next write time, on the grid of a single run
@@ -518,7 +527,26 @@ void ensembleRun<Real>::run()
         bool reached = false;
         while (!reached)
         {
-            reached = solver_->advance(next, logInterval_);
+            // The next stop: the write time, or before it a sample
+            scalar target = next;
+            if (samples)
+            {
+                // From tStop, as the single run from its clock, which is
+                // the last target it reached wherever it computes its
+                // next sample
+                if (!(nextCom > tStop))
+                {
+                    nextCom = ac_.nextComTime(tStop, origin, endTime);
+                }
+                target = min(target, nextCom);
+            }
+            const bool hit = solver_->advance(target, logInterval_);
+            if (hit)
+            {
+                tStop = target;
+            }
+            // At a sample before the write time: on to the next stop
+            reached = hit && !(target < next);
             if (runSignals::pending)
             {
                 runSignals::pending = 0;
@@ -538,7 +566,18 @@ void ensembleRun<Real>::run()
                     << ": an ensemble writes at its write times only"
                     << nl;
             }
-            logProgress(next, reached && next >= endTime);
+            // A progress line where a logInterval passed (one advance's
+            // budget) or at the write time; not at every sample
+            if
+            (
+                !hit || reached
+             || std::chrono::duration<double>(clock::now() - lastLog).count()
+             >= logInterval_
+            )
+            {
+                logProgress(next, reached && next >= endTime);
+                lastLog = clock::now();
+            }
         }
         stepping +=
             std::chrono::duration<double>(clock::now() - t0).count();
