@@ -338,9 +338,18 @@ fi
 dir="$(newCase sigterm)"
 decomposeDict "$dir" 2 simple 2 1
 setEntry "$dir/system/controlDict" endTime 1000
+# Open MPI's mpirun, given SIGTERM, sends the processes SIGCONT at once,
+# SIGTERM 1 s later (odls_base_sigkill_timeout) and SIGKILL 1 s after
+# that, and meanwhile no longer drains their standard output.  Written
+# every 0.2 s (every 13 steps, 4.5 ms of wall time, a steady-state line
+# each), the solver filled that pipe within the first second, blocked on
+# its log before the SIGTERM came and was killed without stopping (both
+# CI runs of 2026-12-06; measured with a probe process: SIGCONT, +1.000 s
+# SIGTERM, +2.000 s SIGKILL).  Written every 2 s, its log stays far below
+# the pipe's 64 kB and the stop itself is what is tested.
+sigInterval=2
+setEntry "$dir/system/controlDict" writeInterval $sigInterval
 (cd "$dir" && decomposePar -force > log.decomposePar 2>&1)
-# (mpirun kills the processes about 1 s after forwarding SIGTERM: this
-# case of 576 cells writes in milliseconds)
 (cd "$dir" && exec mpirun --oversubscribe -np 2 savageHutterFoam -parallel -backend $backend -logInterval 0.1 > log.savageHutterFoam 2>&1) &
 pid=$!
 waitFor "$dir/log.savageHutterFoam" "^Time = " 60
@@ -356,7 +365,7 @@ then
     pass "SIGTERM to mpirun (exit $rc): both processors wrote $t0 whole and stopped"
     # On to the next write time but one, from latestTime, against the
     # serial run uninterrupted to it
-    end="$(python3 -c "import math; print('%.9g' % ((math.floor($t0/0.2 + 1e-9) + 2)*0.2))")"
+    end="$(python3 -c "import math; print('%.9g' % ((math.floor($t0/$sigInterval + 1e-9) + 2)*$sigInterval))")"
     setEntry "$dir/system/controlDict" endTime "$end"
     (cd "$dir" && runDecomposed 2 log.restart \
         && reconstructPar -latestTime > log.reconstructPar 2>&1)
@@ -364,6 +373,7 @@ then
     ser2="$work/serialTo$end"
     cp -r "$base" "$ser2"
     setEntry "$ser2/system/controlDict" endTime "$end"
+    setEntry "$ser2/system/controlDict" writeInterval $sigInterval
     (cd "$ser2" && savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1)
     if [ $rc -eq 0 ] && [ -d "$ser2/$end" ] && grep -q "Create mesh for time = $t0" "$dir/log.restart"
     then
