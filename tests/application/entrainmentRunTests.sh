@@ -136,13 +136,7 @@ EOF
     restore0Dir
     runApplication setAvalancheFields
     # A closed box: walls up- and downslope too
-    for side in upslope downslope
-    do
-        foamDictionary 0/U -entry "boundaryField/$side" \
-            -set "{ type slip; }" > /dev/null
-        foamDictionary 0/h -entry "boundaryField/$side" \
-            -set "{ type zeroGradient; }" > /dev/null
-    done
+    closeSlope
 ) > "$work/base.log" 2>&1 \
     && [ -f "$base/0/hEntrainable" ] \
     || { cat "$work/base.log"; fail "setting up the base case (its log above)"; finish; exit 1; }

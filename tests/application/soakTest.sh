@@ -50,13 +50,7 @@ every=$((steps / 200))
     runApplication blockMesh
     restore0Dir
     runApplication setAvalancheFields
-    for side in upslope downslope
-    do
-        foamDictionary 0/U -entry "boundaryField/$side" \
-            -set "{ type slip; }" > /dev/null
-        foamDictionary 0/h -entry "boundaryField/$side" \
-            -set "{ type zeroGradient; }" > /dev/null
-    done
+    closeSlope
 ) > "$work/setup.log" 2>&1 || { cat "$work/setup.log"; fail "setting up the case (its log above)"; finish; exit 1; }
 
 log="$d/log.savageHutterFoam"

@@ -96,6 +96,21 @@ finish()
     [ "$failed" -eq 0 ] && [ "$passed" -gt 0 ]
 }
 
+#- closeSlope: in the case of the current directory (the damBreak
+#  tutorial's patches), walls up- and downslope too: U slip, h
+#  zeroGradient there, so that the domain is closed
+closeSlope()
+{
+    local side
+    for side in upslope downslope
+    do
+        foamDictionary 0/U -entry "boundaryField/$side" \
+            -set "{ type slip; }" > /dev/null
+        foamDictionary 0/h -entry "boundaryField/$side" \
+            -set "{ type zeroGradient; }" > /dev/null
+    done
+}
+
 timeDirs()
 {
     (cd "$1" && ls -d [0-9]* 2>/dev/null | grep -v '^0$' | grep -v orig | sort -g)

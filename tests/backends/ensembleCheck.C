@@ -56,23 +56,60 @@ namespace
 {
 
 
+//- The output times of the ensembles and their single runs
+constexpr double ends[] = {1.5, 3, 6};
+
+//- members as a CPU ensemble on threads through ends, stopped once by a
+//  spent wall budget on the way to ends[1]
 template<class Real>
-void exactness(Counter& t, int nMembers, int threads, unsigned seed)
+struct StoppedRun
+{
+    std::unique_ptr<EnsembleSolver<Real>> e;
+    bool early;     //!< whether advance() returned at the spent budget
+                    //!< before reaching ends[1] (it must not have)
+    bool reached;   //!< whether the advances after it reached their ends
+};
+
+template<class Real>
+StoppedRun<Real> runWithStop
+(
+    const std::vector<Problem<Real>>& members,
+    int threads
+)
 {
 #ifdef _OPENMP
     omp_set_num_threads(threads);
 #endif
+    StoppedRun<Real> r;
+    r.e = makeCpuEnsemble(members);
+    r.e->advance(ends[0], 1e300);
+    // A spent wall budget: advance() returns before the end, then goes on
+    r.early = r.e->advance(ends[1], 0.0);
+    r.reached = r.e->advance(ends[1], 1e300);
+    r.reached = r.e->advance(ends[2], 1e300) && r.reached;
+    return r;
+}
+
+//- A single run through ends
+template<class Real>
+void runSingle(Solver<Real>& s)
+{
+    for (const double tEnd : ends)
+    {
+        s.advance(tEnd, 1e300);
+    }
+}
+
+template<class Real>
+void exactness(Counter& t, int nMembers, int threads, unsigned seed)
+{
     const char* prec = sizeof(Real) == 8 ? "double" : "float";
     const std::vector<Problem<Real>> members =
         shcases::inclinedPlaneMembers<Real>(1, nMembers);
-    std::unique_ptr<EnsembleSolver<Real>> e = makeCpuEnsemble(members);
-    const double ends[] = {1.5, 3, 6};
-
-    e->advance(ends[0], 1e300);
-    // A spent wall budget: advance() returns before the end, then goes on
-    const bool early = e->advance(ends[1], 0.0);
-    bool reached = e->advance(ends[1], 1e300);
-    reached = e->advance(ends[2], 1e300) && reached;
+    StoppedRun<Real> run = runWithStop(members, threads);
+    EnsembleSolver<Real>* e = run.e.get();
+    const bool early = run.early;
+    const bool reached = run.reached;
 
     std::mt19937 rng(seed);
     std::vector<int> picks = {0};
@@ -100,9 +137,7 @@ void exactness(Counter& t, int nMembers, int threads, unsigned seed)
     {
         std::printf(" %d", m);
         CpuSolver<Real> single(members[m], true);
-        single.advance(ends[0], 1e300);
-        single.advance(ends[1], 1e300);
-        single.advance(ends[2], 1e300);
+        runSingle(single);
         steps += single.steps();
         const std::string b = compareMember(*e, m, single);
         if (!b.empty())
@@ -124,18 +159,13 @@ void exactness(Counter& t, int nMembers, int threads, unsigned seed)
 template<class Real>
 void coverExactness(Counter& t, int nMembers, int threads)
 {
-#ifdef _OPENMP
-    omp_set_num_threads(threads);
-#endif
     const char* prec = sizeof(Real) == 8 ? "double" : "float";
     const std::vector<Problem<Real>> members =
         shcases::coveredPlaneMembers<Real>(1, nMembers);
-    std::unique_ptr<EnsembleSolver<Real>> e = makeCpuEnsemble(members);
-    const double ends[] = {1.5, 3, 6};
-    e->advance(ends[0], 1e300);
-    const bool early = e->advance(ends[1], 0.0);
-    bool reached = e->advance(ends[1], 1e300);
-    reached = e->advance(ends[2], 1e300) && reached;
+    StoppedRun<Real> run = runWithStop(members, threads);
+    EnsembleSolver<Real>* e = run.e.get();
+    const bool early = run.early;
+    const bool reached = run.reached;
     std::printf
     (
         "\n  bed's cover, %s, %d members, %d threads (%s), every member"
@@ -155,10 +185,7 @@ void coverExactness(Counter& t, int nMembers, int threads)
     {
         const Problem<Real>& pb = members[m];
         CpuSolver<Real> single(pb, true);
-        for (const double tEnd : ends)
-        {
-            single.advance(tEnd, 1e300);
-        }
+        runSingle(single);
         const std::string b = compareMember(*e, m, single);
         if (!b.empty())
         {
@@ -196,10 +223,7 @@ void coverExactness(Counter& t, int nMembers, int threads)
             Problem<Real> bare = pb;
             bare.cResistance.clear();
             CpuSolver<Real> without(bare, true);
-            for (const double tEnd : ends)
-            {
-                without.advance(tEnd, 1e300);
-            }
+            runSingle(without);
             std::vector<Real> h, hu, hv, h1, hu1, hv1;
             e->getState(m, h, hu, hv);
             without.getState(h1, hu1, hv1);
