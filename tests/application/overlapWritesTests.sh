@@ -16,6 +16,12 @@
 #       thread and the solver waited for them less than half their time
 #       (it stepped while they were in flight); the run with them
 #       switched off says so;
+#     fill: with the fill of the fields from the host snapshot held
+#       0.2 s per write (SH_TEST_FILL_DELAY, a test hook), the solver's
+#       thread spends less than 0.1 s per write in write() besides waiting
+#       for the write before (the fill is the writer thread's), while with
+#       SH_OVERLAP_WRITES=0 it spends at least the 0.2 s; both runs' time
+#       directories byte for byte those of "same";
 #     fails: a write that fails on the writer thread (a file size limit,
 #       ulimit -f, standing in for a full disk) is reported on the
 #       solver's thread naming the staging path, non-zero exit, no time
@@ -61,6 +67,19 @@ secondsOf()
         | cut -d' ' -f1
 }
 
+#- ownPerWrite <log>: seconds per write in write() on the solver's thread
+#  besides waiting for the write before ("S s in write on the solver's
+#  thread (W s of it waiting ...)": (S - W)/N)
+ownPerWrite()
+{
+    grep '^Writes: ' "$1" | tail -n1 | python3 -c "
+import re, sys
+l = sys.stdin.read()
+n = int(re.match(r'Writes: ([0-9]+) ', l).group(1))
+m = re.search(r'([0-9.]+) s in write on the solver.s thread \(([0-9.]+) s of it waiting', l)
+print('%.3f' % ((float(m.group(1)) - float(m.group(2)))/n))"
+}
+
 base="$work/base"
 makeCase "$base" || { fail "case set-up (see $base)"; finish; exit; }
 
@@ -92,6 +111,28 @@ then
     pass "overlapped: 10 writes, $writing s on the writer thread, $waited s waited for; SH_OVERLAP_WRITES=0 writes on the solver's thread and says so"
 else
     fail "overlapped: writing '$writing' s, waited '$waited' s (see $over/log, $sync/log)"
+fi
+
+# -- fill: on the writer thread, held 0.2 s per write
+fillOver="$work/fillOverlap"
+fillSync="$work/fillSync"
+cp -r "$base" "$fillOver"
+cp -r "$base" "$fillSync"
+(cd "$fillOver" && SH_TEST_FILL_DELAY=0.2 savageHutterFoam -backend cpu > log 2>&1)
+rcOver=$?
+(cd "$fillSync" && SH_TEST_FILL_DELAY=0.2 SH_OVERLAP_WRITES=0 savageHutterFoam -backend cpu > log 2>&1)
+rcSync=$?
+ownOver=$(ownPerWrite "$fillOver/log" 2>/dev/null)
+ownSync=$(ownPerWrite "$fillSync/log" 2>/dev/null)
+if [ $rcOver -eq 0 ] && [ $rcSync -eq 0 ] \
+&& grep -q '^Writes: 10 in .* on the writer thread (.*, [0-9.]* s filling the fields)' "$fillOver/log" \
+&& python3 -c "import sys; o, s = float('$ownOver'), float('$ownSync'); sys.exit(not (o < 0.1 and s >= 0.2))" 2>/dev/null \
+&& diff -r -x 'log*' "$fillOver" "$sync" > "$work/fill.diff" 2>&1 \
+&& diff -r -x 'log*' "$fillSync" "$sync" >> "$work/fill.diff" 2>&1
+then
+    pass "fill: held 0.2 s per write, the solver's thread spends $ownOver s per write in write besides waiting (SH_OVERLAP_WRITES=0: $ownSync s); directories those of \"same\""
+else
+    fail "fill: rc $rcOver/$rcSync, solver's thread '$ownOver' s per write (SH_OVERLAP_WRITES=0: '$ownSync' s), or the directories differ (see $fillOver/log, $fillSync/log, $work/fill.diff)"
 fi
 
 # -- fails: the first write of the run fails on the writer thread

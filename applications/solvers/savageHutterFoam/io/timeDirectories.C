@@ -440,6 +440,22 @@ std::string overlapRefused()
     return std::string();
 }
 
+//- Seconds from a test hook's environment variable (0: unset)
+double testSeconds(const char* var)
+{
+    const char* env = std::getenv(var);
+    return env ? std::atof(env) : 0;
+}
+
+//- Sleep that long (nothing for 0)
+void sleepFor(const double seconds)
+{
+    if (seconds > 0)
+    {
+        std::this_thread::sleep_for(std::chrono::duration<double>(seconds));
+    }
+}
+
 //- An OpenFOAM error as OpenFOAM prints it (IOerror with its file and
 //  line: its own operator<<, which error's does not call)
 template<class Error>
@@ -621,21 +637,15 @@ void atomicWriter::writeTime(const word& name, const bool restart)
 }
 
 
-void atomicWriter::writeCatching(const word& name, const bool restart)
+void atomicWriter::catching
+(
+    const word& name,
+    const std::function<void()>& step
+)
 {
-    const wallClock::time_point start = wallClock::now();
-    // The tests hold a write in flight this long (seconds), to signal or
-    // step during it
-    static const double delay =
-        std::getenv("SH_TEST_WRITE_DELAY")
-      ? std::atof(std::getenv("SH_TEST_WRITE_DELAY")) : 0;
-    if (delay > 0)
-    {
-        std::this_thread::sleep_for(std::chrono::duration<double>(delay));
-    }
     try
     {
-        writeTime(name, restart);
+        step();
     }
     catch (const writeFailure& f)
     {
@@ -656,6 +666,45 @@ void atomicWriter::writeCatching(const word& name, const bool restart)
     {
         failure_ = whatFailed("write", name, e.what());
     }
+}
+
+
+void atomicWriter::releaseFilled()
+{
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        filled_ = true;
+    }
+    filledChanged_.notify_all();
+}
+
+
+void atomicWriter::writeCatching
+(
+    const word& name,
+    const bool restart,
+    const std::function<void()>& fill
+)
+{
+    const wallClock::time_point start = wallClock::now();
+    if (fill)
+    {
+        // The tests make the fill this long (seconds), to see on which
+        // thread it runs
+        static const double fillDelay = testSeconds("SH_TEST_FILL_DELAY");
+        sleepFor(fillDelay);
+        catching(name, fill);
+        fillSeconds_ += secondsSince(start);
+    }
+    releaseFilled();
+    // The tests hold a write in flight this long (seconds), to signal or
+    // step during it
+    static const double delay = testSeconds("SH_TEST_WRITE_DELAY");
+    sleepFor(delay);
+    if (failure_.empty())
+    {
+        catching(name, [&]() { writeTime(name, restart); });
+    }
     writeSeconds_ += secondsSince(start);
     ++nWrites_;
 }
@@ -671,17 +720,31 @@ void atomicWriter::reportFailure() const
 }
 
 
-void atomicWriter::write(const bool restart)
+void atomicWriter::write
+(
+    const bool restart,
+    const std::function<void()>& fill
+)
 {
     wait();
     const word name = runTime_.timeName();
+    // Decomposed: the fields' boundary conditions exchange across
+    // processor patches (MPI), which only the caller's thread may do
+    std::function<void()> fillInWrite = fill;
+    if (fill && overlap_ && !fillsOnWriter())
+    {
+        const wallClock::time_point start = wallClock::now();
+        fill();
+        fillSeconds_ += secondsSince(start);
+        fillInWrite = nullptr;
+    }
     // Errors inside Time's writer and OpenFOAM's file functions throw, to
     // be caught and reported here or by wait()
     ioThrew_ = FatalIOError.throwExceptions();
     threw_ = FatalError.throwExceptions();
     if (!overlap_)
     {
-        writeCatching(name, restart);
+        writeCatching(name, restart, fillInWrite);
         FatalIOError.throwExceptions(ioThrew_);
         FatalError.throwExceptions(threw_);
         if (!failure_.empty())
@@ -690,6 +753,7 @@ void atomicWriter::write(const bool restart)
         }
         return;
     }
+    filled_ = false;
     // SIGTERM, SIGINT, SIGUSR1 stay with the solver's thread: the writer
     // thread starts with them blocked (a thread inherits its creator's
     // mask)
@@ -701,9 +765,25 @@ void atomicWriter::write(const bool restart)
     pthread_sigmask(SIG_BLOCK, &mask, &old);
     thread_ = std::thread
     (
-        [this, name, restart]() { writeCatching(name, restart); }
+        [this, name, restart, fillInWrite]()
+        {
+            writeCatching(name, restart, fillInWrite);
+        }
     );
     pthread_sigmask(SIG_SETMASK, &old, nullptr);
+}
+
+
+void atomicWriter::waitFilled()
+{
+    if (!thread_.joinable())
+    {
+        return;
+    }
+    const wallClock::time_point start = wallClock::now();
+    std::unique_lock<std::mutex> lock(mutex_);
+    filledChanged_.wait(lock, [this]() { return filled_; });
+    waitSeconds_ += secondsSince(start);
 }
 
 

@@ -362,9 +362,12 @@ void avalancheRun<Real>::write(const bool restart)
         return;
     }
     const wallClock::time_point callStart = wallClock::now();
-    // The copy from the solver and its check while the writer thread may
+    const double waited = writer_.waitSeconds();
+    // The snapshot, once the write before has filled the fields from it:
+    // the copy from the solver and its check while the writer thread may
     // still be writing the time before (they touch neither the fields nor
     // Time, which are its own until it has finished)
+    writer_.waitFilled();
     solver_->getState(hs_, hus_, hvs_);
     solver_->getPeakMaps(peaks_);
     solver_->getCover(layer_, eroded_);
@@ -372,12 +375,7 @@ void avalancheRun<Real>::write(const bool restart)
     const bool good = ac_.goodState(hs_, hus_, hvs_);
     finishWrite();
     const double dtWrite = solver_->time() - lastWritten_;
-    if (good)
-    {
-        ac_.fill(hs_, hus_, hvs_, peaks_);
-        ac_.fillCover(layer_, eroded_);
-    }
-    else
+    if (!good)
     {
         FatalErrorInFunction
             << "The solution at t = " << solver_->time() << " is not"
@@ -402,7 +400,17 @@ void avalancheRun<Real>::write(const bool restart)
     }
     runTime_.setTime(solver_->time(), index0_ + solver_->steps());
     runTime_.setDeltaT(solver_->lastDt(), false);
-    writer_.write(full);
+    // The fields filled from the snapshot in the write (on the writer
+    // thread where it overlaps), which then leaves the snapshot alone
+    writer_.write
+    (
+        full,
+        [this]()
+        {
+            ac_.fill(hs_, hus_, hvs_, peaks_);
+            ac_.fillCover(layer_, eroded_);
+        }
+    );
     if (again)
     {
         Info<< "Wrote " << runTime_.timeName() << " again, with the restart"
@@ -410,6 +418,7 @@ void avalancheRun<Real>::write(const bool restart)
         lastRestart_ = solver_->time();
         lastFull_ = true;
         writeCallSeconds_ += secondsSince(callStart);
+    writeCallWaitSeconds_ += writer_.waitSeconds() - waited;
         return;
     }
     // After the write (now, or once the writer thread has finished)
@@ -431,6 +440,7 @@ void avalancheRun<Real>::write(const bool restart)
         lastRestart_ = solver_->time();
     }
     writeCallSeconds_ += secondsSince(callStart);
+    writeCallWaitSeconds_ += writer_.waitSeconds() - waited;
 }
 
 
@@ -742,11 +752,21 @@ void avalancheRun<Real>::run()
     const double waited =
         returnReduce(writer_.waitSeconds(), maxOp<double>());
     const double called = returnReduce(writeCallSeconds_, maxOp<double>());
+    const double calledWaiting =
+        returnReduce(writeCallWaitSeconds_, maxOp<double>());
     const double synced =
         returnReduce(writer_.syncSeconds(), maxOp<double>());
+    const double filling =
+        returnReduce(writer_.fillSeconds(), maxOp<double>());
     const double bytes = returnReduce(writer_.bytes(), sumOp<double>());
     char mb[32];
     snprintf(mb, sizeof(mb), "%.1f", bytes/1e6);
+    // The fields are filled in the write (on the writer thread, or on the
+    // solver's where writes do not overlap) but for a decomposed run's
+    // overlapped writes, where the solver's thread fills them
+    const bool fillInWrite = writer_.fillsOnWriter() || !writer_.overlapped();
+    const std::string filled =
+        wallSeconds(filling) + " s filling the fields";
     Info<< "Writes: " << writer_.nWrites() << " in "
         << wallSeconds(writing).c_str() << " s "
         << (writer_.overlapped()
@@ -754,8 +774,14 @@ void avalancheRun<Real>::run()
           + " s waited for by the solver)"
           : std::string("on the solver's thread")).c_str()
         << ", " << mb << " MB (" << wallSeconds(synced).c_str()
-        << " s of it fsync); " << wallSeconds(called).c_str()
-        << " s in write on the solver's thread" << nl << endl;
+        << " s of it fsync"
+        << (fillInWrite ? ", " + filled : std::string()).c_str()
+        << "); " << wallSeconds(called).c_str()
+        << " s in write on the solver's thread ("
+        << wallSeconds(calledWaiting).c_str()
+        << " s of it waiting for the write before"
+        << (fillInWrite ? std::string() : ", " + filled).c_str()
+        << ")" << nl << endl;
 }
 
 // * * * * * * * * * * * * * * Instantiations  * * * * * * * * * * * * * * //
