@@ -20,7 +20,10 @@ Description
        J (L0 - r t) per plan area (normal to the bed: r t, L0 - r t), to
        1e-12 relative per step; h = H/J and h times the 3D speed as in a;
        the motion along the descent.  A J dropped from planEntrainCell's
-       take-up fails b.
+       take-up fails b.  c: at fixed dt 0.02, 0.01, 0.005 s to t = 4 s the
+       speed u = hu/h against the exact u(t): hu is the left sum
+       h0 u0 + S (h0 t + r t (t - dt)/2) to round-off, and u converges at
+       first order (error ratios 2).
     2. The volume balance in a closed box (walls), a cap released on the
        plane over an erodible layer of 0.2 m with a gap: sum (h + layer)
        dA conserved to round-off (relative 1e-13), layer >= 0, h >= 0,
@@ -290,12 +293,58 @@ void constantRateRun(Counter& test, const PlanPlane* pl)
         "(worst relative %.2e, %.2e)", worstE, worstL));
 }
 
+//- Test 1c: the same layer at fixed dt to t = 4 s, its speed u = hu/h
+//  against the exact u(t) = (h0 u0 + S (h0 t + r t^2/2))/(h0 + r t).  At
+//  fixed dt the left sum is S (h0 t + r t (t - dt)/2) exactly, so hu
+//  equals that to round-off and the error of u is S r t dt/(2 h): first
+//  order, halving dt halves it
+void constantRateSpeed(Counter& test)
+{
+    const double zeta = 30, h0 = 0.5, u0 = 2, t = 4;
+    ModelInput in = planeInput();
+    in.entrainmentModel = EntrainmentModel::ConstantRate;
+    in.constantRate.rate = 0.02;
+    const double r = in.constantRate.rate, S = slopeAcceleration(in, zeta);
+    const double hEx = h0 + r*t, uEx = (h0*u0 + S*(h0*t + 0.5*r*t*t))/hEx;
+    std::printf("  1c. fixed dt to t = %g s: exact h %.10f, u %.10f m/s\n", t, hEx, uEx);
+    std::printf("  %8s %14s %14s %14s %12s %12s\n", "dt", "h", "u = hu/h", "u left sum", "err u", "|hu - sum|");
+    const double dts[3] = {0.02, 0.01, 0.005};
+    double err[3];
+    bool sumOk = true, hOk = true;
+    for (int i = 0; i < 3; ++i)
+    {
+        Problem<double> pb = uniformLayer(in, zeta, h0, u0);
+        pb.hEntrainable.assign(pb.nCells(), 10.0);
+        CpuSolver<double> s(pb, false);
+        const int n = int(std::lround(t/dts[i]));
+        for (int k = 0; k < n; ++k)
+        {
+            s.step(dts[i]);
+        }
+        std::vector<double> hs, hu, hv;
+        s.getState(hs, hu, hv);
+        const double sum = h0*u0 + S*(h0*t + 0.5*r*t*(t - dts[i]));
+        const double dev = std::fabs(hu[0] - sum)/sum;
+        err[i] = std::fabs(hu[0]/hs[0] - uEx)/uEx;
+        std::printf("  %8g %14.10f %14.10f %14.10f %12.3e %12.3e\n", dts[i], hs[0], hu[0]/hs[0], sum/hs[0], err[i], dev);
+        sumOk = sumOk && dev <= 1e-12;
+        hOk = hOk && std::fabs(hs[0] - hEx) <= 1e-12*hEx;
+    }
+    test.check(hOk, "1c. h = h0 + r t at every dt, to 1e-12 relative");
+    test.check(sumOk, "1c. hu = h0 u0 + S (h0 t + r t (t - dt)/2), the left sum at fixed dt, to 1e-12 relative");
+    const double r1 = err[0]/err[1], r2 = err[1]/err[2];
+    test.check(err[2] < 1e-3 && r1 >= 1.9 && r1 <= 2.1 && r2 >= 1.9 && r2 <= 2.1,
+        say("1c. u(t) converges to the exact speed at first order: errors %.2e %.2e %.2e, ratios %.3f %.3f "
+            "within [1.9, 2.1]", err[0], err[1], err[2], r1, r2));
+}
+
 void constantRate(Counter& test)
 {
     std::printf("\n1. uniform layer with constantRate r 0.02 m/s, zeta 30, delta 20, h0 0.5 m, u0 2 m/s, layer 10 m\n");
     constantRateRun(test, nullptr);
     const PlanPlane turned{30*deg, 30*deg};
     constantRateRun(test, &turned);
+    constantRateSpeed(test);
 }
 
 struct Balance
