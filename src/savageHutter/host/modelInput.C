@@ -602,18 +602,40 @@ std::string frictionCoeffsExample(FrictionLaw selected)
 }
 
 
+//- One line of a model's listing: keyword, its value in Input (the
+//  default of an optional coefficient, an example of a required one),
+//  required or optional, unit, bound, what it is
+template<class Input>
+void coefficientRow
+(
+    std::ostream& os,
+    const Coefficient<Input>& c,
+    const Input& defaults
+)
+{
+    os  << "    coefficient " << std::left
+        << std::setw(8) << c.keyword << " "
+        << std::setw(8) << exactString(defaults.*c.value) << " "
+        << std::setw(8) << (c.required ? "required" : "optional")
+        << " " << std::setw(5) << (*c.unit ? c.unit : "-")
+        << " " << std::setw(7) << boundText(c.bound)
+        << " " << c.what << "\n";
+}
+
+
 std::string describeFrictionLaws()
 {
     std::ostringstream os;
     os  << "Friction laws: frictionModel <name> and <name>Coeffs { ... } in\n"
         << "constant/transportProperties; the law's header is\n"
         << "src/savageHutter/physics/frictionLaws/<name>.H (adding a law:\n"
-        << "docs/frictionLaws.md).  Per law: its coefficients (keyword,"
-        << " default,\nrequired or optional, unit, bound, what it is), the"
-        << " coefficient that\nearthPressure activePassive takes the basal"
-        << " friction angle from, and\nits edge cases: a coefficient's value"
-        << " accepted or rejected, with\nearthPressure isotropic or with"
-        << " activePassive and phi 30.\n";
+        << "docs/frictionLaws.md).  Per law: its coefficients (keyword, the\n"
+        << "default of an optional one or an example of a required one,"
+        << " required or\noptional, unit, bound (every number at most 1e30"
+        << " in magnitude), what it\nis), the coefficient that earthPressure"
+        << " activePassive takes the basal\nfriction angle from, and its"
+        << " edge cases: a coefficient's value\naccepted or rejected, with"
+        << " earthPressure isotropic or with\nactivePassive and phi 30.\n";
     forEachFrictionLaw
     (
         [&](auto law)
@@ -624,13 +646,7 @@ std::string describeFrictionLaws()
                 << "    " << Law::description << "\n";
             for (const auto& c : Law::coefficients)
             {
-                os  << "    coefficient " << std::left
-                    << std::setw(8) << c.keyword << " "
-                    << std::setw(8) << exactString(defaults.*c.value) << " "
-                    << std::setw(8) << (c.required ? "required" : "optional")
-                    << " " << std::setw(5) << (*c.unit ? c.unit : "-")
-                    << " " << std::setw(7) << boundText(c.bound)
-                    << " " << c.what << "\n";
+                coefficientRow(os, c, defaults);
             }
             if (Law::frictionAngle.kind != FrictionAngle::none)
             {
@@ -693,8 +709,10 @@ std::string describeEntrainmentModels()
         << " erodible layer is the\nfield 0/hEntrainable [m], the"
         << " resistance 0/cResistance [1/m]; the\nmodel's header is"
         << " src/savageHutter/physics/entrainmentModels/<name>.H.\n"
-        << "Per model: its coefficients (keyword, default, required or"
-        << " optional,\nunit, bound, what it is) and its edge cases.\n";
+        << "Per model: its coefficients (keyword, the default of an"
+        << " optional one or\nan example of a required one, required or"
+        << " optional, unit, bound\n(every number at most 1e30 in"
+        << " magnitude), what it is) and its edge cases.\n";
     forEachEntrainmentModel
     (
         [&](auto model)
@@ -705,13 +723,7 @@ std::string describeEntrainmentModels()
                 << "    " << M::description << "\n";
             for (const auto& c : M::coefficients)
             {
-                os  << "    coefficient " << std::left
-                    << std::setw(8) << c.keyword << " "
-                    << std::setw(8) << exactString(defaults.*c.value) << " "
-                    << std::setw(8) << (c.required ? "required" : "optional")
-                    << " " << std::setw(5) << (*c.unit ? c.unit : "-")
-                    << " " << std::setw(7) << boundText(c.bound)
-                    << " " << c.what << "\n";
+                coefficientRow(os, c, defaults);
             }
             for (const EntrainmentEdgeCase& e : M::edgeCases)
             {
