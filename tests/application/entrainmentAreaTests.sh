@@ -23,7 +23,9 @@
 #          and the volume sum J h A = 0.5 x its plan area (J from 0/zb, and
 #          the log's); a resistance polygon (0.02) and a raster (0.03, on
 #          the DEM's grid, nodata around) overlapping it sum to 0.05 where
-#          they overlap, exact per cell; patches and dimensions.
+#          they overlap, exact per cell; patches and dimensions; an
+#          entrainment raster (0.5 vertical over a 32 m square) in place
+#          of the polygon gives 0.5 cos(35) in its 64 cells, volume 512.
 #       3. terrainToCase, axis mode (a 35 deg plane): an entrainment square
 #          of normal thickness 0.5 in (x, y) gives 0.5 in its 64 cells,
 #          volume 800 m^3; a resistance square 0.01 in its 64 cells; the
@@ -307,9 +309,18 @@ resistance
     f2 { raster "constant/forest.asc"; }
 }
 EOF
-    $python - "$1/constant/forest.asc" "${2:-0.03}" <<'PYEOF'
+    squareRaster "$1/constant/forest.asc" "${2:-0.03}" 120 160 80 112
+}
+
+#- squareRaster <file> <value> <X0> <X1> <Y0> <Y1>: an ESRI ASCII raster on
+#  the planSlopeCase DEM's grid (2 m pixels from (0, 0), 84 x 60) of
+#  <value> over X in [X0, X1], Y in [Y0, Y1], nodata where X < 20, 0 elsewhere
+squareRaster()
+{
+    $python - "$@" <<'PYEOF'
 import sys
 nx, ny, d, v = 84, 60, 2.0, float(sys.argv[2])
+X0, X1, Y0, Y1 = (float(a) for a in sys.argv[3:7])
 with open(sys.argv[1], "w") as o:
     o.write(f"ncols {nx}\nnrows {ny}\nxllcorner 0\nyllcorner 0\ncellsize {d}\nNODATA_value -9999\n")
     for j in range(ny):
@@ -317,7 +328,7 @@ with open(sys.argv[1], "w") as o:
         row = []
         for i in range(nx):
             X = (i + 0.5)*d
-            row.append(v if 120 < X < 160 and 80 < Y < 112 else (-9999 if X < 20 else 0))
+            row.append(v if X0 < X < X1 and Y0 < Y < Y1 else (-9999 if X < 20 else 0))
         o.write(" ".join("%.17g" % x for x in row) + "\n")
 PYEOF
 }
@@ -358,6 +369,35 @@ ok = pe == want and pc == want and de == "[0 1 0 0 0 0 0]" and dc == "[0 -1 0 0 
 msg = "patches %s, dimensions %s and %s" % (pe, de, dc)'
 else
     fail "terrainToCase, plan mode with entrainment and resistance failed (see $pc/log.terrainToCase)"
+fi
+
+# An entrainment raster in place of e1's polygon: a vertical thickness of
+# 0.5 per pixel over X in [40, 72], Y in [16, 48] (cells i 10..17, j
+# 4..11, on the plane part and away from the DEM's outline), 0 elsewhere
+rc="$work/planRaster"
+planSlopeCase "$rc" 0 0 0
+planAreas "$rc"
+squareRaster "$rc/constant/snow.asc" 0.5 40 72 16 48
+sed -i -e 's/polygon     ((40 0) (72 0) (72 32) (40 32));/raster "constant\/snow.asc";/' \
+    -e '/^        thickness   0.5;$/d' "$rc/system/terrainDict"
+if grep -q 'raster "constant/snow.asc"' "$rc/system/terrainDict" \
+    && ! grep -q '^        thickness   0.5;$' "$rc/system/terrainDict" \
+    && (cd "$rc" && runApplication terrainToCase > /dev/null)
+then
+    check "terrainToCase plan mode, hEntrainable of a raster of vertical thickness 0.5" '
+g = plan("'"$rc"'")
+v = field(g.case, "0", "hEntrainable")
+inside = [c for c in range(len(v)) if 40 < g.XY(c)[0] < 72 and 16 < g.XY(c)[1] < 48]
+want = 0.5/math.sqrt(1 + a35**2)
+e = max(abs(v[c] - want) for c in inside)
+out = max(abs(v[c]) for c in range(len(v)) if c not in inside)
+vol = g.volume(v)
+log = open(g.case + "/log.terrainToCase").read()
+logged = float(re.search(r"^Erodible volume \(hEntrainable\) (\S+) m\^3", log, re.M).group(1))
+ok = len(inside) == 64 and e < 1e-9 and out == 0 and close(vol, 512) and close(logged, 512, 1e-6)
+msg = "%d cells of h = 0.5 cos35 within %.3g m, max |h| elsewhere %.3g; volume sum J h A %.12g m^3 (512), the log %s" % (len(inside), e, out, vol, logged)'
+else
+    fail "terrainToCase, plan mode with an entrainment raster failed (see $rc/system/terrainDict, $rc/log.terrainToCase)"
 fi
 
 # -- 3. terrainToCase, axis mode -------------------------------------------------
