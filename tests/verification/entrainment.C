@@ -31,7 +31,9 @@ Description
        plan grid (a tilted DEM, H = J h per plan area); for every model
        but none (constantRate 0.05 m/s; frontal phi_b 25 deg, where the
        bed at 30 deg is unstable by itself and fails under the thin parts
-       of the flow; erosionEnergy e_b 100 J/kg).
+       of the flow; erosionEnergy e_b 100 J/kg); each run again with h,
+       the layer and (plan) the bed perturbed by round-off, times 1 + k
+       eps with k in -4..4 per cell, under the same bounds.
     3. Resistance only (cResistance c, Coulomb delta 20 deg): the uniform
        layer from rest reaches the terminal speed u_t = sqrt(S/c) of
        du/dt = S - c u^2, u = u_t tanh(sqrt(S c) t).  u(5 s) at fixed dt
@@ -91,6 +93,7 @@ Description
 #include "physics/entrainment.H"
 
 #include <cstring>
+#include <limits>
 
 using namespace sh;
 using namespace shtest;
@@ -352,8 +355,19 @@ struct Balance
     double v0, v1, layerMin, hMin, erodedVol, layerLoss;
 };
 
-Balance boxRun(ModelInput in, bool plan)
+//- A relative round-off perturbation, k eps with k in -4..4, from a hash
+//  of the integers a, b (a cell's indices, a field's number)
+double roundOff(int a, int b)
 {
+    const unsigned x = (unsigned(a)*2654435761u) ^ (unsigned(b)*40503u + 977u);
+    return double(int((x >> 7) % 9u) - 4)*std::numeric_limits<double>::epsilon();
+}
+
+//- The closed box of test 2; `perturb`: h, the layer and (plan) the bed
+//  each times 1 + k eps, k in -4..4 per cell (roundOff)
+Balance boxRun(ModelInput in, bool plan, bool perturb = false)
+{
+    const double wiggle = perturb ? 1.0 : 0.0;
     const double zeta = 30;
     if (plan)
     {
@@ -364,7 +378,10 @@ Balance boxRun(ModelInput in, bool plan)
     const double tz = std::tan(zeta*deg);
     if (plan)
     {
-        pb.setTopography([&](double x, double) { return -tz*x; });
+        pb.setTopography([&](double x, double y)
+        {
+            return -tz*x*(1 + wiggle*roundOff(int(std::floor(x*7)), int(std::floor(y*7)) + 3));
+        });
     }
     else
     {
@@ -375,7 +392,8 @@ Balance boxRun(ModelInput in, bool plan)
     pb.setState([&](double x, double y)
     {
         const double r2 = ((x - 8)*(x - 8) + y*y)/16.0;
-        return Primitive{J*std::max(0.0, 1 - r2), 0, 0};
+        const double p = 1 + wiggle*roundOff(int(std::floor(x)), int(std::floor(y)) + 100);
+        return Primitive{J*std::max(0.0, 1 - r2)*p, 0, 0};
     });
     pb.hEntrainable.assign(pb.nCells(), 0.0);
     for (int j = 0; j < 20; ++j)
@@ -384,7 +402,7 @@ Balance boxRun(ModelInput in, bool plan)
         {
             // a layer downslope of the cap, with a gap of bare bed
             const bool covered = i >= 12 && !(i >= 20 && i < 24);
-            pb.hEntrainable[pb.cell(i, j)] = covered ? J*0.2 : 0.0;
+            pb.hEntrainable[pb.cell(i, j)] = covered ? J*0.2*(1 + wiggle*roundOff(i, j + 200)) : 0.0;
         }
     }
     CpuSolver<double> s(pb, false);
@@ -398,8 +416,10 @@ Balance boxRun(ModelInput in, bool plan)
               *std::min_element(layer.begin(), layer.end()),
               *std::min_element(h.begin(), h.end()),
               d1.erodedVolume, d0.layerVolume - d1.layerVolume};
-    std::printf("  %-13s %-17s volume %.6f -> %.6f m^3, layer %.6f -> %.6f m^3, eroded %.6f m^3, steps %ld\n",
-        toString(in.entrainmentModel).c_str(), plan ? "plan grid" : "slope coordinates", d0.volume, d1.volume, d0.layerVolume,
+    std::printf("  %-13s %-27s volume %.6f -> %.6f m^3, layer %.6f -> %.6f m^3, eroded %.6f m^3, steps %ld\n",
+        toString(in.entrainmentModel).c_str(),
+        (std::string(plan ? "plan grid" : "slope coordinates") + (perturb ? ", perturbed" : "")).c_str(),
+        d0.volume, d1.volume, d0.layerVolume,
         d1.layerVolume, d1.erodedVolume, s.steps());
     return b;
 }
@@ -422,11 +442,12 @@ void volumeBalance(Counter& test)
     {
         const EntrainmentModel e = entrainmentModelOf(model);
         if (e == EntrainmentModel::NoEntrainment) { return; }
-        for (bool plan : {false, true})
+        for (int run = 0; run < 4; ++run)
         {
-            const Balance b = boxRun(boxInput(e), plan);
+            const bool plan = run % 2, perturb = run >= 2;
+            const Balance b = boxRun(boxInput(e), plan, perturb);
             const std::string name = std::string(plan ? "2b. plan grid, " : "2a. slope coordinates, ")
-                + toString(e);
+                + (perturb ? "input perturbed by round-off, " : "") + toString(e);
             const double rel = std::fabs(b.v1 - b.v0)/b.v0;
             test.check(rel <= 1e-13, name + say(": flowing + erodible volume conserved (relative change %.2e <= 1e-13)", rel));
             test.check(b.layerMin >= 0 && b.hMin >= 0, name + ": layer and h never negative");
