@@ -14,6 +14,37 @@
 namespace Foam
 {
 
+namespace
+{
+
+//- The partials of f(begin, end) over the chunks of 16384 cells of
+//  [0, n), the chunks over OpenMP threads: summed in the chunks' order,
+//  they give the same sum whatever the number of threads
+template<class Partial, class F>
+void chunkPartials(const long n, std::vector<Partial>& parts, const F& f)
+{
+    const long chunk = 16384;
+    const long nChunks = (n + chunk - 1)/chunk;
+    parts.assign(nChunks, Partial());
+    #pragma omp parallel for schedule(static)
+    for (long b = 0; b < nChunks; ++b)
+    {
+        parts[b] = f(b*chunk, std::min(n, (b + 1)*chunk));
+    }
+}
+
+//- A chunk's share of the steady-state check
+struct steadyPartial
+{
+    double sum2 = 0;
+    double maxRate = 0;
+    long nWet = 0;
+    long nWetNow = 0;
+};
+
+} // namespace
+
+
 // * * * * * * * * * * * * * * * * Constructor * * * * * * * * * * * * * * //
 
 template<class Real>
@@ -459,35 +490,50 @@ void avalancheRun<Real>::finishWrite()
 template<class Real>
 void avalancheRun<Real>::steadyCheck(const double dt)
 {
-    // Dry ground at both times does not dilute the measure
+    // Dry ground at both times does not dilute the measure; whether any
+    // material is left (a cell wet now); hPrev_ becomes the state
     const double hDry = ac_.input.model.hDry;
-    double sum2 = 0, maxRate = 0;
-    long nWet = 0;
-    for (std::size_t k = 0; k < hs_.size(); ++k)
-    {
-        if (!(double(hs_[k]) > hDry || double(hPrev_[k]) > hDry))
+    const long n = long(hs_.size());
+    hPrev_.resize(n);
+    std::vector<steadyPartial> parts;
+    chunkPartials
+    (
+        n, parts,
+        [&](const long begin, const long end)
         {
-            continue;
+            steadyPartial p;
+            for (long k = begin; k < end; ++k)
+            {
+                const double h = hs_[k], h0 = hPrev_[k];
+                hPrev_[k] = hs_[k];
+                p.nWetNow += h > hDry;
+                if (h > hDry || h0 > hDry)
+                {
+                    const double r = std::fabs(h - h0)/dt;
+                    p.sum2 += r*r;
+                    p.maxRate = std::max(p.maxRate, r);
+                    ++p.nWet;
+                }
+            }
+            return p;
         }
-        const double r = std::fabs(double(hs_[k]) - double(hPrev_[k]))/dt;
-        sum2 += r*r;
-        maxRate = std::max(maxRate, r);
-        ++nWet;
+    );
+    double sum2 = 0, maxRate = 0;
+    long nWet = 0, nWetNow = 0;
+    for (const steadyPartial& p : parts)
+    {
+        sum2 += p.sum2;
+        maxRate = std::max(maxRate, p.maxRate);
+        nWet += p.nWet;
+        nWetNow += p.nWetNow;
     }
     // Over all processors (nothing to reduce in a serial run)
-    // Whether any material is left (a cell wet now)
-    long nWetNow = 0;
-    for (std::size_t k = 0; k < hs_.size(); ++k)
-    {
-        nWetNow += double(hs_[k]) > hDry;
-    }
     reduce(sum2, sumOp<double>());
     reduce(maxRate, maxOp<double>());
     reduce(nWet, sumOp<long>());
     reduce(nWetNow, sumOp<long>());
     empty_ = nWetNow == 0;
     const double rms = nWet ? std::sqrt(sum2/nWet) : 0;
-    hPrev_ = hs_;
     if (!steadyFile_ && Pstream::master())
     {
         mkDir(steadyDir_);
@@ -527,18 +573,32 @@ void avalancheRun<Real>::steadyCheck(const double dt)
         // Plan coordinates: H |V|^2/2 per plan area, |V| the 3D speed
         // (the momentum's vertical component p hu + q hv)
         const bool plan = ac_.input.plan();
-        double energy = 0;
-        forAll(ac_.h, c)
-        {
-            const label k = ac_.smesh.gridIndex(c);
-            const double h = hs_[k];
-            if (h > hDry)
+        std::vector<double> energies;
+        chunkPartials
+        (
+            long(ac_.h.size()), energies,
+            [&](const long begin, const long end)
             {
-                const double hu = hus_[k], hv = hvs_[k];
-                const double hw =
-                    plan ? ac_.planP[c]*hu + ac_.planQ[c]*hv : 0;
-                energy += 0.5*((hu*hu + hv*hv) + hw*hw)/h;
+                double e = 0;
+                for (long c = begin; c < end; ++c)
+                {
+                    const label k = ac_.smesh.gridIndex(c);
+                    const double h = hs_[k];
+                    if (h > hDry)
+                    {
+                        const double hu = hus_[k], hv = hvs_[k];
+                        const double hw =
+                            plan ? ac_.planP[c]*hu + ac_.planQ[c]*hv : 0;
+                        e += 0.5*((hu*hu + hv*hv) + hw*hw)/h;
+                    }
+                }
+                return e;
             }
+        );
+        double energy = 0;
+        for (const double e : energies)
+        {
+            energy += e;
         }
         energy *= ac_.smesh.dx()*ac_.smesh.dy();
         reduce(energy, sumOp<double>());
