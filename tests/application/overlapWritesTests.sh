@@ -80,18 +80,27 @@ m = re.search(r'([0-9.]+) s in write on the solver.s thread \(([0-9.]+) s of it 
 print('%.3f' % ((float(m.group(1)) - float(m.group(2)))/n))"
 }
 
+#- runPair <dir> <sync dir> <env> <sync env>: copies of the base case run
+#  with writes overlapped and with SH_OVERLAP_WRITES=0, each with its
+#  environment settings (NAME=value ...); their exit status in rcOver,
+#  rcSync
+runPair()
+{
+    cp -r "$base" "$1"
+    cp -r "$base" "$2"
+    (cd "$1" && env $3 savageHutterFoam -backend cpu > log 2>&1)
+    rcOver=$?
+    (cd "$2" && env $4 SH_OVERLAP_WRITES=0 savageHutterFoam -backend cpu > log 2>&1)
+    rcSync=$?
+}
+
 base="$work/base"
 makeCase "$base" || { fail "case set-up (see $base)"; finish; exit; }
 
 # -- same, overlapped
 over="$work/overlap"
 sync="$work/sync"
-cp -r "$base" "$over"
-cp -r "$base" "$sync"
-(cd "$over" && SH_TEST_WRITE_DELAY=0.03 savageHutterFoam -backend cpu > log 2>&1)
-rcOver=$?
-(cd "$sync" && SH_OVERLAP_WRITES=0 savageHutterFoam -backend cpu > log 2>&1)
-rcSync=$?
+runPair "$over" "$sync" SH_TEST_WRITE_DELAY=0.03 ""
 nOver=$(timeDirs "$over" | wc -l)
 if [ $rcOver -eq 0 ] && [ $rcSync -eq 0 ] && [ "$nOver" -eq 10 ] \
 && diff -r -x 'log*' "$over" "$sync" > "$work/same.diff" 2>&1
@@ -116,16 +125,11 @@ fi
 # -- fill: on the writer thread, held 0.2 s per write
 fillOver="$work/fillOverlap"
 fillSync="$work/fillSync"
-cp -r "$base" "$fillOver"
-cp -r "$base" "$fillSync"
-(cd "$fillOver" && SH_TEST_FILL_DELAY=0.2 savageHutterFoam -backend cpu > log 2>&1)
-rcOver=$?
-(cd "$fillSync" && SH_TEST_FILL_DELAY=0.2 SH_OVERLAP_WRITES=0 savageHutterFoam -backend cpu > log 2>&1)
-rcSync=$?
+runPair "$fillOver" "$fillSync" SH_TEST_FILL_DELAY=0.2 SH_TEST_FILL_DELAY=0.2
 ownOver=$(ownPerWrite "$fillOver/log" 2>/dev/null)
 ownSync=$(ownPerWrite "$fillSync/log" 2>/dev/null)
 if [ $rcOver -eq 0 ] && [ $rcSync -eq 0 ] \
-&& grep -q '^Writes: 10 in .* on the writer thread (.*, [0-9.]* s filling the fields)' "$fillOver/log" \
+&& grep -q '^Writes: 10 in .* on the writer thread (.* MB ([0-9.]* s of it fsync, [0-9.]* s filling the fields); ' "$fillOver/log" \
 && python3 -c "import sys; o, s = float('$ownOver'), float('$ownSync'); sys.exit(not (o < 0.1 and s >= 0.2))" 2>/dev/null \
 && diff -r -x 'log*' "$fillOver" "$sync" > "$work/fill.diff" 2>&1 \
 && diff -r -x 'log*' "$fillSync" "$sync" >> "$work/fill.diff" 2>&1

@@ -689,10 +689,6 @@ void atomicWriter::writeCatching
     const wallClock::time_point start = wallClock::now();
     if (fill)
     {
-        // The tests make the fill this long (seconds), to see on which
-        // thread it runs
-        static const double fillDelay = testSeconds("SH_TEST_FILL_DELAY");
-        sleepFor(fillDelay);
         catching(name, fill);
         fillSeconds_ += secondsSince(start);
     }
@@ -728,13 +724,20 @@ void atomicWriter::write
 {
     wait();
     const word name = runTime_.timeName();
+    // The tests make the fill this long (seconds), to see on which
+    // thread it runs
+    static const double fillDelay = testSeconds("SH_TEST_FILL_DELAY");
+    std::function<void()> fillInWrite = fill;
+    if (fill && fillDelay > 0)
+    {
+        fillInWrite = [fill]() { sleepFor(fillDelay); fill(); };
+    }
     // Decomposed: the fields' boundary conditions exchange across
     // processor patches (MPI), which only the caller's thread may do
-    std::function<void()> fillInWrite = fill;
     if (fill && overlap_ && !fillsOnWriter())
     {
         const wallClock::time_point start = wallClock::now();
-        fill();
+        fillInWrite();
         fillSeconds_ += secondsSince(start);
         fillInWrite = nullptr;
     }
