@@ -449,7 +449,7 @@ void avalancheRun<Real>::write(const bool restart)
         lastRestart_ = solver_->time();
         lastFull_ = true;
         writeCallSeconds_ += secondsSince(callStart);
-    writeCallWaitSeconds_ += writer_.waitSeconds() - waited;
+        writeCallWaitSeconds_ += writer_.waitSeconds() - waited;
         return;
     }
     // After the write (now, or once the writer thread has finished)
