@@ -133,6 +133,21 @@ def asc(path):
     return rows, float(head["NODATA_value"])
 def close(a, b, rel=1e-9):
     return abs(a - b) <= rel*max(abs(b), 1e-300)
+def verticalSquare(case, Y0):
+    """0/hEntrainable of a vertical 0.5 over X in (40, 72), Y in (Y0, Y0 +
+    32) on the 35 deg plane: 0.5 cos35 in its 64 cells, 0 elsewhere, the
+    volume sum J h A and the log's 512 m^3; the grid, ok, the message"""
+    g = plan(case)
+    v = field(g.case, "0", "hEntrainable")
+    inside = [c for c in range(len(v)) if 40 < g.XY(c)[0] < 72 and Y0 < g.XY(c)[1] < Y0 + 32]
+    want = 0.5*math.cos(math.radians(35))
+    e = max(abs(v[c] - want) for c in inside)
+    out = max(abs(v[c]) for c in range(len(v)) if c not in inside)
+    vol = g.volume(v)
+    log = open(g.case + "/log.terrainToCase").read()
+    logged = float(re.search(r"^Erodible volume \(hEntrainable\) (\S+) m\^3", log, re.M).group(1))
+    ok = len(inside) == 64 and e < 1e-9 and out == 0 and close(vol, 512) and close(logged, 512, 1e-6)
+    return g, ok, "%d cells of h = 0.5 cos35 within %.3g m, max |h| elsewhere %.3g; volume sum J h A %.12g m^3 (0.5 x 32 x 32 = 512), the log %s" % (len(inside), e, out, vol, logged)
 PYEOF
 
 #- check <what> <python: sets ok and msg, over areas.py's helpers>
@@ -338,18 +353,8 @@ planAreas "$pc"
 if (cd "$pc" && runApplication terrainToCase > /dev/null)
 then
     check "terrainToCase plan mode, hEntrainable of a vertical 0.5 square" '
-g = plan("'"$pc"'")
-v = field(g.case, "0", "hEntrainable")
-inside = [c for c in range(len(v)) if 40 < g.XY(c)[0] < 72 and 0 < g.XY(c)[1] < 32]
-want = 0.5/math.sqrt(1 + a35**2)
-e = max(abs(v[c] - want) for c in inside)
-out = max(abs(v[c]) for c in range(len(v)) if c not in inside)
-vol = g.volume(v)
-log = open(g.case + "/log.terrainToCase").read()
-logged = float(re.search(r"^Erodible volume \(hEntrainable\) (\S+) m\^3", log, re.M).group(1))
-ok = (g.nx, g.ny) == (42, 30) and len(inside) == 64 and e < 1e-9 and out == 0 \
-    and close(vol, 512) and close(logged, 512, 1e-6)
-msg = "%d cells of h = 0.5 cos35 within %.3g m, max |h| elsewhere %.3g; volume sum J h A %.12g m^3 (0.5 x 32 x 32 = 512), the log %s" % (len(inside), e, out, vol, logged)'
+g, ok, msg = verticalSquare("'"$pc"'", 0)
+ok = ok and (g.nx, g.ny) == (42, 30)'
     check "terrainToCase plan mode, cResistance of a polygon and a raster" '
 g = plan("'"$pc"'")
 v = field(g.case, "0", "cResistance")
@@ -385,17 +390,7 @@ if grep -q 'raster "constant/snow.asc"' "$rc/system/terrainDict" \
     && (cd "$rc" && runApplication terrainToCase > /dev/null)
 then
     check "terrainToCase plan mode, hEntrainable of a raster of vertical thickness 0.5" '
-g = plan("'"$rc"'")
-v = field(g.case, "0", "hEntrainable")
-inside = [c for c in range(len(v)) if 40 < g.XY(c)[0] < 72 and 16 < g.XY(c)[1] < 48]
-want = 0.5/math.sqrt(1 + a35**2)
-e = max(abs(v[c] - want) for c in inside)
-out = max(abs(v[c]) for c in range(len(v)) if c not in inside)
-vol = g.volume(v)
-log = open(g.case + "/log.terrainToCase").read()
-logged = float(re.search(r"^Erodible volume \(hEntrainable\) (\S+) m\^3", log, re.M).group(1))
-ok = len(inside) == 64 and e < 1e-9 and out == 0 and close(vol, 512) and close(logged, 512, 1e-6)
-msg = "%d cells of h = 0.5 cos35 within %.3g m, max |h| elsewhere %.3g; volume sum J h A %.12g m^3 (512), the log %s" % (len(inside), e, out, vol, logged)'
+g, ok, msg = verticalSquare("'"$rc"'", 16)'
 else
     fail "terrainToCase, plan mode with an entrainment raster failed (see $rc/system/terrainDict, $rc/log.terrainToCase)"
 fi
