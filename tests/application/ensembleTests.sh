@@ -101,6 +101,20 @@ differing()
     echo "$bad"
 }
 
+#- likeSingle <single run> <member dir> <fields> <what>: pass when the
+#  member's fields at t = 1 and 2 are byte for byte the single run's
+likeSingle()
+{
+    local bad
+    bad="$(differing "$1/1" "$2/1" "$3")$(differing "$1/2" "$2/2" "$3")"
+    if [ -z "$bad" ]
+    then
+        pass "$4: $3 at t = 1 and 2 byte for byte its single run"
+    else
+        fail "$4: differs from its single run in:$bad"
+    fi
+}
+
 ensembleDict()
 {
     cat > "$1/system/ensembleDict" <<DICT
@@ -506,13 +520,8 @@ open("0/cResistance", "wb").write(data[:m.end()] + body + data[m.end() + 8 * n:]
 PY
         savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1
     )
-    bad="$(differing "$one/1" "$cover/ensemble/$m/1" "$coverFields")$(differing "$one/2" "$cover/ensemble/$m/2" "$coverFields")"
-    if [ -z "$bad" ]
-    then
-        pass "cover member $k (rate $rate, cResistanceScale $scale): $coverFields at t = 1 and 2 byte for byte its single run"
-    else
-        fail "cover member $k (rate $rate, cResistanceScale $scale): differs from its single run in:$bad"
-    fi
+    likeSingle "$one" "$cover/ensemble/$m" "$coverFields" \
+        "cover member $k (rate $rate, cResistanceScale $scale)"
 done
 out="$(/usr/bin/python3 - "$cover" <<'PY'
 import os, sys
@@ -611,13 +620,8 @@ then
             setEntry constant/transportProperties constantRateCoeffs/rate "$rate"
             savageHutterFoam -backend cpu > log.savageHutterFoam 2>&1
         )
-        bad="$(differing "$one/1" "$pcov/ensemble/$m/1" "$planFields")$(differing "$one/2" "$pcov/ensemble/$m/2" "$planFields")"
-        if [ -z "$bad" ]
-        then
-            pass "plan coordinates with a cover: member $k (rate $rate): $planFields at t = 1 and 2 byte for byte its single run"
-        else
-            fail "plan coordinates with a cover: member $k (rate $rate): differs from its single run in:$bad"
-        fi
+        likeSingle "$one" "$pcov/ensemble/$m" "$planFields" \
+            "plan coordinates with a cover: member $k (rate $rate)"
     done
     pre="$work/planCoverRestart"
     restartLegs "$pre"
